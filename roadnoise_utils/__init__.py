@@ -1,0 +1,46 @@
+"""roadnoise: the road-noise (RM) model of Belluzzo et al. (2002), stage by stage.
+
+Public entry points (DESIGN section 6)::
+
+    import roadnoise_utils as ru
+    tire   = ru.load_tire("165_65R14")          # validated TireSpec from data/tires/*.toml
+    fet    = ru.build_fet(tire)                 # FETModel: sparse M, K(omega), DOF maps
+    static = ru.solve_static(fet, road="flat")  # or road="drum": footprint, pressures, tasselli
+    visco  = ru.frf_visco(fet, static, freqs)   # direct FRFs: H_tot, H_i, G_H (fixed hub)
+
+Cached stage results for the notebooks: :mod:`roadnoise_utils.pipeline`.
+"""
+
+from . import pipeline
+from .calibration import calibration_table
+from .fet import FETModel, build_fet
+from .frf import FRFResult, frf_visco
+from .modes import LoadedModes, loaded_modes
+from .ring import ring_check, ring_frequencies, ring_parameters
+from .static import StaticState, load_deflection, solve_static
+from .style import set_style
+from .tasselli import Tasselli
+from .tire_spec import TireSpec, load_tire
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "FETModel",
+    "FRFResult",
+    "LoadedModes",
+    "StaticState",
+    "Tasselli",
+    "TireSpec",
+    "build_fet",
+    "calibration_table",
+    "frf_visco",
+    "load_deflection",
+    "load_tire",
+    "loaded_modes",
+    "pipeline",
+    "ring_check",
+    "ring_frequencies",
+    "ring_parameters",
+    "set_style",
+    "solve_static",
+]

@@ -1,0 +1,63 @@
+"""Calibration of a FET against its targets (DESIGN section 2): the "target / obtained" table.
+
+Targets live in ``data/calibration/<tire>.toml`` (a range and a source for each quantity);
+the obtained values are computed from the static state and the direct FRF of the tire.
+"""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+
+import pandas as pd
+
+from . import pipeline
+from .analysis import resonance_peaks
+from .paths import data_dir
+from .tire_spec import TireSpec
+
+
+def calibration_targets(tire: str) -> dict:
+    """Targets of a tire (file stem in ``data/calibration``)."""
+    path = data_dir() / "calibration" / f"{tire}.toml"
+    if not path.exists():
+        raise FileNotFoundError(f"no calibration targets {path}")
+    with open(path, "rb") as fh:
+        return tomllib.load(fh)
+
+
+def calibration_values(tire: str | TireSpec, road: str = "flat") -> dict[str, float]:
+    """The calibrated quantities of a tire, in the targets' units."""
+    static = pipeline.static_state(tire, road)
+    frf = pipeline.visco_frf(tire, road, progress=False)
+    peaks, _ = resonance_peaks(frf.freqs, frf.H_tot)
+    t = static.tasselli
+    return {
+        "vertical_stiffness": static.vertical_stiffness / 1e3,
+        "first_vertical_resonance": float(peaks[0]) if peaks.size else float("nan"),
+        "footprint_length": static.footprint_length * 1e3,
+        "footprint_width": static.footprint_width * 1e3,
+        "n_tasselli": t.n,
+        "max_tassello_size": max(t.length.max(), t.width.max()) * 1e3,
+    }
+
+
+def calibration_table(tire: str | TireSpec = "165_65R14", road: str = "flat") -> pd.DataFrame:
+    """Table "quantity / target / obtained / unit / ok / source" of the tire's calibration."""
+    spec = pipeline.tire_spec(tire)
+    targets = calibration_targets(Path(spec.source.split(" ")[0]).stem)
+    values = calibration_values(spec, road)
+    rows = []
+    for name, t in targets.items():
+        value = values[name]
+        rows.append(
+            {
+                "quantity": name.replace("_", " "),
+                "target": f"{t['low']:g} - {t['high']:g}",
+                "obtained": value,
+                "unit": t["unit"],
+                "ok": bool(t["low"] <= value <= t["high"]),
+                "source": t["source"],
+            }
+        )
+    return pd.DataFrame(rows).set_index("quantity")

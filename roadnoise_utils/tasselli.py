@@ -1,0 +1,205 @@
+"""Tasselli: the footprint divided into blocks in rows and columns (paper Fig. 2).
+
+The paper divides the FE footprint into 71 blocks ("tasselli") and feeds each with one
+vertical displacement: "a weighted average of all the physical displacements of the points
+inside the area of the tassello, where the weighting function consists of the shape
+functions of the finite elements" (section "Simulation of Wheel-Road Interaction").
+
+Here every contact node of the tread carries a bilinear shape function (hat) on the grid of
+tread points, so a road height field :math:`z(x, y)` gives the tassello displacement
+
+.. math:: u_i = \\sum_{n \\in i} w_n\\, \\bar z_n, \\qquad
+          \\bar z_n = \\frac{\\int N_n z\\,dA}{\\int N_n\\,dA}, \\qquad
+          w_n = \\frac{\\int N_n\\,dA}{\\sum_{m \\in i}\\int N_m\\,dA},
+
+so the weights of each tassello sum to one. Columns are groups of belt strips; rows are bands
+of equal length along the footprint. Tasselli are numbered from 1, row by row from the leading
+edge (+x, where the road enters the footprint), and from left (-y) to right in each row.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+#: Longest tassello side that still resolves 5 cm wavelengths (paper abstract), m.
+MAX_TASSELLO_SIZE = 0.025
+
+_GAUSS_X, _GAUSS_W = np.polynomial.legendre.leggauss(3)
+
+
+@dataclass(frozen=True, eq=False)
+class Tasselli:
+    """Partition of the contact nodes into tasselli, with shape-function weights.
+
+    Per contact node (arrays of length ``n_nodes``): ``node_strip``, ``node_index`` (belt node
+    indices), ``node_x``, ``node_y`` (tread-surface position, m), ``node_dx_minus``,
+    ``node_dx_plus`` (distance to the previous/next tread point along x, m),
+    ``node_tassello`` (0-based tassello of the node) and ``node_weight`` (-).
+
+    Per tassello (arrays of length ``n``): ``row``, ``column``, ``centre_x``, ``centre_y``
+    (weighted centre, m), ``area`` (gross, m^2) and ``bounds`` (n, 4):
+    ``x_min, x_max, y_min, y_max`` of its outline (m).
+    """
+
+    node_strip: np.ndarray
+    node_index: np.ndarray
+    node_x: np.ndarray
+    node_y: np.ndarray
+    node_dx_minus: np.ndarray
+    node_dx_plus: np.ndarray
+    strip_width: float
+    node_tassello: np.ndarray
+    node_weight: np.ndarray
+    row: np.ndarray
+    column: np.ndarray
+    centre_x: np.ndarray
+    centre_y: np.ndarray
+    area: np.ndarray
+    bounds: np.ndarray
+
+    @property
+    def n(self) -> int:
+        """Number of tasselli."""
+        return self.row.size
+
+    @property
+    def numbers(self) -> np.ndarray:
+        """Labels 1..n as in the paper's Fig. 2."""
+        return np.arange(1, self.n + 1)
+
+    @property
+    def length(self) -> np.ndarray:
+        """Longitudinal size of each tassello (m)."""
+        return self.bounds[:, 1] - self.bounds[:, 0]
+
+    @property
+    def width(self) -> np.ndarray:
+        """Lateral size of each tassello (m)."""
+        return self.bounds[:, 3] - self.bounds[:, 2]
+
+    def node_averages(self, height: Callable[[np.ndarray, np.ndarray], np.ndarray]) -> np.ndarray:
+        """Shape-function-weighted road height at each contact node, :math:`\\bar z_n` (m).
+
+        ``height(x, y)`` takes arrays of tread-surface coordinates (m, tire frame) and returns
+        the road height there (m). The integral over each node's bilinear hat is evaluated by
+        3 x 3 Gauss points on each of its four quarters (exact for cubic fields).
+        """
+        total = np.zeros(self.node_x.size)
+        weight = np.zeros(self.node_x.size)
+        dy = self.strip_width
+        for dx_side, sx in ((self.node_dx_minus, -1.0), (self.node_dx_plus, 1.0)):
+            for sy in (-1.0, 1.0):
+                # Gauss points on [0, 1] in each direction, hat = (1 - a)(1 - b)
+                a = 0.5 * (_GAUSS_X + 1.0)
+                wa = 0.5 * _GAUSS_W
+                aa, bb = np.meshgrid(a, a, indexing="ij")
+                ww = np.outer(wa, wa) * (1 - aa) * (1 - bb)
+                x = self.node_x[:, None, None] + sx * dx_side[:, None, None] * aa[None]
+                y = self.node_y[:, None, None] + sy * dy * bb[None]
+                z = np.asarray(height(x, y), dtype=float)
+                if not np.all(np.isfinite(z)):
+                    raise ValueError("road height field returned NaN or inf inside the footprint")
+                jac = dx_side[:, None, None] * dy
+                total += np.sum(ww[None] * z * jac, axis=(1, 2))
+                weight += np.sum(ww[None] * jac, axis=(1, 2))
+        return total / weight
+
+    def average(self, height: Callable[[np.ndarray, np.ndarray], np.ndarray]) -> np.ndarray:
+        """Displacement of each tassello for a road height field, :math:`u_i` (m), (n,)."""
+        return np.bincount(self.node_tassello, weights=self.node_weight * self.node_averages(height), minlength=self.n)
+
+    def membership(self) -> np.ndarray:
+        """Matrix (n, n_nodes) with ``[i, m] = 1`` where contact node m belongs to tassello i."""
+        out = np.zeros((self.n, self.node_x.size))
+        out[self.node_tassello, np.arange(self.node_x.size)] = 1.0
+        return out
+
+
+def tassellate(
+    node_strip: np.ndarray,
+    node_index: np.ndarray,
+    node_x: np.ndarray,
+    node_y: np.ndarray,
+    node_dx_minus: np.ndarray,
+    node_dx_plus: np.ndarray,
+    strip_width: float,
+    target_length: float,
+    strips_per_column: int,
+) -> Tasselli:
+    """Divide contact nodes into rows and columns of tasselli.
+
+    Parameters
+    ----------
+    node_strip, node_index : ndarray of int
+        Belt strip and circumferential index of each contact node.
+    node_x, node_y : ndarray
+        Tread-surface position of each contact node (m).
+    node_dx_minus, node_dx_plus : ndarray
+        Distance to the neighbouring tread points along x (m).
+    strip_width : float
+        Width of a belt strip (m).
+    target_length : float
+        Longest row length (m); rows are equal bands no longer than this.
+    strips_per_column : int
+        Belt strips per column of tasselli.
+    """
+    column_width = strip_width * strips_per_column
+    if column_width > MAX_TASSELLO_SIZE + 1e-12 or target_length > MAX_TASSELLO_SIZE + 1e-12:
+        raise ValueError(
+            f"tasselli of {column_width * 1e3:.1f} mm x {target_length * 1e3:.1f} mm: both sides must be <= "
+            f"{MAX_TASSELLO_SIZE * 1e3:.0f} mm to resolve 5 cm wavelengths ([tasselli] strips_per_column, target_length)"
+        )
+    if node_x.size == 0:
+        raise ValueError("no contact nodes: the tire does not touch the road")
+    lead = np.max(node_x + 0.5 * node_dx_plus)
+    trail = np.min(node_x - 0.5 * node_dx_minus)
+    n_rows = int(np.ceil((lead - trail) / target_length - 1e-9))
+    band = (lead - trail) / n_rows
+    # a node exactly on a band edge goes to the band nearer the footprint centre (symmetric partition)
+    pos = (lead - node_x) / band
+    centre = 0.5 * n_rows
+    rows = np.where(pos < centre, np.floor(pos + 1e-9), np.ceil(pos - 1e-9) - 1).astype(int)
+    rows = np.clip(rows, 0, n_rows - 1)
+    columns = node_strip // strips_per_column
+    # numbering: row by row from the leading edge, left to right
+    key = rows * (columns.max() + 1) + columns
+    unique_keys, node_tassello = np.unique(key, return_inverse=True)
+    n = unique_keys.size
+    area = 0.5 * (node_dx_minus + node_dx_plus) * strip_width
+    tassello_area = np.bincount(node_tassello, weights=area, minlength=n)
+    weight = area / tassello_area[node_tassello]
+
+    def _reduce(values: np.ndarray, fn) -> np.ndarray:
+        out = np.full(n, np.nan)
+        for i in range(n):
+            out[i] = fn(values[node_tassello == i])
+        return out
+
+    bounds = np.column_stack(
+        [
+            _reduce(node_x - 0.5 * node_dx_minus, np.min),
+            _reduce(node_x + 0.5 * node_dx_plus, np.max),
+            _reduce(node_y - 0.5 * strip_width, np.min),
+            _reduce(node_y + 0.5 * strip_width, np.max),
+        ]
+    )
+    return Tasselli(
+        node_strip=node_strip,
+        node_index=node_index,
+        node_x=node_x,
+        node_y=node_y,
+        node_dx_minus=node_dx_minus,
+        node_dx_plus=node_dx_plus,
+        strip_width=strip_width,
+        node_tassello=node_tassello,
+        node_weight=weight,
+        row=unique_keys // (columns.max() + 1),
+        column=unique_keys % (columns.max() + 1),
+        centre_x=np.bincount(node_tassello, weights=weight * node_x, minlength=n),
+        centre_y=np.bincount(node_tassello, weights=weight * node_y, minlength=n),
+        area=tassello_area,
+        bounds=bounds,
+    )
