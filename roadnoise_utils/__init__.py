@@ -11,7 +11,7 @@ Public entry points (DESIGN section 6)::
 Cached stage results for the notebooks: :mod:`roadnoise_utils.pipeline`.
 """
 
-from . import pipeline
+from . import analysis, collection, paper, pipeline
 from .calibration import calibration_table
 from .fet import FETModel, build_fet
 from .frf import FRFResult, frf_visco
@@ -25,6 +25,9 @@ from .tire_spec import TireSpec, load_tire
 __version__ = "0.1.0"
 
 __all__ = [
+    "analysis",
+    "collection",
+    "paper",
     "FETModel",
     "FRFResult",
     "LoadedModes",

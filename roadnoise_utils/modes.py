@@ -21,6 +21,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import pandas as pd
 import scipy.sparse.linalg as spla
 
 from .fet import UX, UZ, FETModel
@@ -77,6 +78,20 @@ class LoadedModes:
         is ``lateral S`` or ``lateral A`` by its fore-aft symmetry.
         """
         return f"n={self.wave_number[r]} m={self.lateral_order[r]} {self.symmetry_class(r)}"
+
+    def table(self, f_max: float = 300.0) -> pd.DataFrame:
+        """Modes up to ``f_max`` (Hz): frequency, n, m, class and share of H_tot(0) (N/mm)."""
+        keep = np.nonzero(self.freqs <= f_max)[0]
+        return pd.DataFrame(
+            {
+                "frequency (Hz)": self.freqs[keep],
+                "n": self.wave_number[keep],
+                "m": self.lateral_order[keep],
+                "class": [self.symmetry_class(r) for r in keep],
+                "share of H_tot(0) (N/mm)": self.hub_share[keep] / 1e3,
+            },
+            index=pd.Index(keep + 1, name="mode"),
+        )
 
     def symmetry_class(self, r: int) -> str:
         """``vertical``, ``fore-aft``, ``lateral S``, ``lateral A`` or ``mixed`` (see :meth:`label`)."""

@@ -230,3 +230,70 @@ def plot_htot(
     ax.set_ylabel("|H| (N/mm)")
     ax.legend()
     return ax
+
+
+def plot_compounds(laws: dict, f_max: float = 400.0) -> plt.Figure:
+    """Storage-modulus ratio and loss factor of each rubber compound vs frequency."""
+    f = np.linspace(0.5, f_max, 400)
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 3.6))
+    for name, law in laws.items():
+        a1.plot(f, law.storage(2 * np.pi * f), label=name)
+        a2.plot(f, law.loss_factor(2 * np.pi * f), label=name)
+    a1.set_ylabel("E'(f) / E_0")
+    a2.set_ylabel("loss factor tan δ")
+    for a in (a1, a2):
+        a.set_xlabel("Frequency (Hz)")
+        a.legend()
+    fig.suptitle("Fractional-Zener rubber compounds")
+    return fig
+
+
+def plot_load_deflection(
+    loads: np.ndarray, deflections: np.ndarray, static: StaticState, ax: plt.Axes | None = None
+) -> plt.Axes:
+    """Load vs deflection with the tangent at the nominal load."""
+    if ax is None:
+        _, ax = plt.subplots(figsize=(6, 4))
+    ax.plot(deflections * MM, loads, "o-", ms=3, label="active-set solutions")
+    d = np.linspace(static.deflection - 0.006, static.deflection + 0.006, 2)
+    ax.plot(
+        d * MM,
+        static.load + static.vertical_stiffness * (d - static.deflection),
+        "--",
+        label=f"tangent {static.vertical_stiffness / 1e3:.0f} N/mm",
+    )
+    ax.plot(static.deflection * MM, static.load, "ks", label="nominal load")
+    ax.set_xlabel("deflection (mm)")
+    ax.set_ylabel("vertical load (N)")
+    ax.legend()
+    return ax
+
+
+def plot_rm_pipeline() -> plt.Figure:
+    """Fig. 1 analogue: the RM pipeline, stage by stage, with the notebook of each stage."""
+    stages = [
+        ("FET model\nstatic: footprint, tasselli", "01", "Fig. 2-3"),
+        ("FETvisco: H_tot\nsuperposition, damping", "02", "Fig. 4-5"),
+        ("FET70Hz modal reduction\nlocal FRFs H_i", "02", "Fig. 5"),
+        ("system identification\n8 poles / 8 zeros each", "03", "Fig. 6, Eq. 1"),
+        ("state space\n(A_F, B_F, C_F, D_F)", "03", "Eq. 2-4"),
+        ("cleat on drum\nfixed hub", "04", "Fig. 8-9"),
+        ("moving hub\nF_M = F_F + F_H", "05", "Eq. 5-7, Fig. 7"),
+        ("road textures\nthrough the footprint", "06", "weights"),
+        ("quarter car\nhub accelerations", "07", "Eq. 8, Fig. 10-14"),
+    ]
+    fig, ax = plt.subplots(figsize=(12, 3.6))
+    ax.set_xlim(0, len(stages))
+    ax.set_ylim(0, 1)
+    ax.axis("off")
+    for i, (text, nb, figs) in enumerate(stages):
+        colour = "tab:blue" if nb in ("01", "02", "03") else ("tab:orange" if nb in ("04",) else "tab:green")
+        ax.add_patch(Rectangle((i + 0.06, 0.35), 0.88, 0.45, fc=colour, alpha=0.18, ec=colour))
+        ax.text(i + 0.5, 0.575, text, ha="center", va="center", fontsize=7.5)
+        ax.text(i + 0.5, 0.25, f"notebook {nb}\n{figs}", ha="center", va="center", fontsize=7, color="0.3")
+        if i < len(stages) - 1:
+            ax.annotate("", (i + 1.06, 0.575), (i + 0.94, 0.575), arrowprops={"arrowstyle": "->", "color": "0.3"})
+    ax.text(1.5, 0.93, "frequency domain: FE tire → local transfer functions", ha="center", color="tab:blue")
+    ax.text(6.5, 0.93, "time domain: n parallel systems driven by the road", ha="center", color="tab:green")
+    fig.suptitle("Fig. 1 analogue: scheme of the RoadNoise (RM) model and where each stage lives")
+    return fig

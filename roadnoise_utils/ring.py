@@ -120,3 +120,10 @@ def ring_check(spec: TireSpec, n_max: int = 8, n_elements: int | None = None) ->
     table = pd.DataFrame(rows).set_index("n")
     table["rel_error"] = table["fe_Hz"] / table["closed_form_Hz"] - 1.0
     return table
+
+
+def ring_convergence(spec: TireSpec, meshes: tuple[int, ...] = (60, 120, 240, 480), n_max: int = 8) -> pd.DataFrame:
+    """Relative error of the FE ring frequencies (rows ``n``) for each mesh (columns: elements)."""
+    return pd.DataFrame({m: ring_check(spec, n_max, n_elements=m)["rel_error"] for m in meshes}).rename_axis(
+        columns="elements"
+    )

@@ -10,9 +10,10 @@ contact, solved with a primal active set on the tread springs:
 * contact is frictionless (vertical forces only) while loading;
 * the road rises by the deflection :math:`\\delta` until the contact forces sum to the load.
 
-The belt response to contact forces is condensed onto the candidate tread points with the
-influence (compliance) matrix :math:`C = E^T K^{-1} E`, so each active-set iteration is a
-small dense solve and the whole load-deflection curve is cheap. The hub is fixed; the force
+The belt response to contact forces is condensed onto the tread points with the influence
+(compliance) matrix :math:`C = E^T K^{-1} E`, computed column by column only for the points
+that enter the active set, so each active-set iteration is a small dense solve and the whole
+load-deflection curve is cheap. The hub is fixed; the force
 it receives equals the load to round-off.
 """
 
@@ -21,6 +22,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+import pandas as pd
 import scipy.linalg as sla
 import scipy.sparse.linalg as spla
 
@@ -127,27 +129,46 @@ class ContactProblem:
     """The loaded-tire contact problem condensed onto the candidate tread points.
 
     Build it once per tire and road (:func:`contact_problem`); :meth:`solve` then costs a few
-    small dense solves per load.
+    small dense solves per load. Columns of the compliance matrix are computed lazily, only
+    for the tread points that ever enter the active set (C is symmetric, so those columns
+    also give the displacement of every other candidate).
     """
 
     fet: FETModel
     road: RoadSurface
     free: np.ndarray  # DOF indices not fixed (all but the hub)
     candidates: np.ndarray  # flat indices (strip * n_el + node) of candidate tread points
-    compliance: np.ndarray  # C = E^T K^-1 E (m/N)
+    candidate_dofs: np.ndarray  # their uz DOF, as positions in ``free``
     stiffness_tread: np.ndarray  # k_n of candidates (N/m)
     gap0: np.ndarray  # tread point height above the road top before loading, at zero rise (m)
     road_height0: np.ndarray  # road height under each candidate before loading (m)
     lu: object  # sparse LU of K on the free DOF
+    _columns: np.ndarray = field(init=False, repr=False)  # C[:, j] once computed (m/N)
+    _known: np.ndarray = field(init=False, repr=False)
+
+    def __post_init__(self) -> None:
+        n = self.candidates.size
+        self._columns = np.zeros((n, n))
+        self._known = np.zeros(n, bool)
+
+    def compliance(self, columns: np.ndarray) -> np.ndarray:
+        """Columns ``C[:, columns]`` of the compliance matrix :math:`E^T K^{-1} E` (m/N)."""
+        missing = columns[~self._known[columns]]
+        if missing.size:
+            rhs = np.zeros((self.free.size, missing.size))
+            rhs[self.candidate_dofs[missing], np.arange(missing.size)] = 1.0
+            self._columns[:, missing] = self.lu.solve(rhs)[self.candidate_dofs]
+            self._known[missing] = True
+        return self._columns[:, columns]
 
     def _active_solution(self, active: np.ndarray, load: float) -> tuple[np.ndarray, float, float]:
         """Contact forces of the active set at ``load``, the rise delta and dF/d(delta)."""
-        c = self.compliance[np.ix_(active, active)] + np.diag(1.0 / self.stiffness_tread[active])
-        rhs_unit = np.ones(active.sum())
-        rhs_gap = -self.gap0[active]
+        idx = np.nonzero(active)[0]
+        c = self.compliance(idx)[idx]
+        c = 0.5 * (c + c.T) + np.diag(1.0 / self.stiffness_tread[idx])
         factor = sla.cho_factor(c)
-        a = sla.cho_solve(factor, rhs_unit)
-        b = sla.cho_solve(factor, rhs_gap)
+        a = sla.cho_solve(factor, np.ones(idx.size))
+        b = sla.cho_solve(factor, -self.gap0[idx])
         delta = (load - b.sum()) / a.sum()
         return delta * a + b, delta, a.sum()
 
@@ -155,14 +176,14 @@ class ContactProblem:
         """Active-set solve at ``load`` (N): (forces on candidates, deflection, tangent stiffness, iterations)."""
         if not (np.isfinite(load) and load > 0):
             raise ValueError(f"load = {load} N: valid range is (0, inf) N")
-        k_est = 2.0e5
-        active = self.gap0 <= np.sort(self.gap0)[0] + load / k_est
-        forces = np.zeros(active.size)
+        # start from the geometric overlap at a quarter of a typical deflection: the belt moves
+        # up bodily and the footprint is much shorter than the overlap at full deflection
+        active = self.gap0 <= self.gap0.min() + 0.25 * load / 2.0e5
         for iteration in range(1, max_iterations + 1):
             lam_active, delta, k_tan = self._active_solution(active, load)
             forces = np.zeros(active.size)
             forces[active] = lam_active
-            uz = self.compliance[:, active] @ lam_active
+            uz = self.compliance(np.nonzero(active)[0]) @ lam_active
             gap = self.gap0 - delta + uz  # tread point above road (m)
             new_active = np.where(active, forces > 0.0, gap < 0.0)
             if np.array_equal(new_active, active):
@@ -174,29 +195,22 @@ class ContactProblem:
 
     def full_displacement(self, forces: np.ndarray) -> np.ndarray:
         """Displacement of all DOF (hub fixed) under vertical forces on the candidates."""
-        mesh = self.fet.mesh
-        f = np.zeros(self.fet.n_dof)
-        strip, node = np.divmod(self.candidates, mesh.n_elements)
-        f[mesh.dof(strip, node, UZ)] = forces
+        f = np.zeros(self.free.size)
+        f[self.candidate_dofs] = forces
         u = np.zeros(self.fet.n_dof)
-        u[self.free] = self.lu.solve(f[self.free])
+        u[self.free] = self.lu.solve(f)
         return u
 
 
 def contact_problem(fet: FETModel, road: RoadSurface) -> ContactProblem:
-    """Condense the static stiffness (hub fixed) onto the candidate tread points."""
+    """Factorise the static stiffness (hub fixed) and set up the candidate tread points."""
     mesh = fet.mesh
     free = np.setdiff1d(np.arange(fet.n_dof), mesh.hub_dofs)
     k_static = fet.K(0.0, storage_only=True)[free][:, free].tocsc()
-    lu = spla.splu(k_static)
+    lu = spla.splu(k_static, permc_spec="NATURAL")  # circumference-major numbering: banded
     theta = np.angle(np.exp(1j * mesh.theta))  # in (-pi, pi]
     strip, node = np.nonzero(np.broadcast_to(np.abs(theta) <= CANDIDATE_ANGLE, (mesh.n_strips, mesh.n_elements)))
     candidates = strip * mesh.n_elements + node
-    position = np.searchsorted(free, mesh.dof(strip, node, UZ))
-    e = np.zeros((free.size, candidates.size))
-    e[position, np.arange(candidates.size)] = 1.0
-    compliance = e.T @ lu.solve(e)
-    compliance = 0.5 * (compliance + compliance.T)
     tx, tz = mesh.tread_xz()
     top = tz.min()
     road_height0 = top - road.drop(tx.ravel()[candidates])
@@ -205,7 +219,7 @@ def contact_problem(fet: FETModel, road: RoadSurface) -> ContactProblem:
         road=road,
         free=free,
         candidates=candidates,
-        compliance=compliance,
+        candidate_dofs=np.searchsorted(free, mesh.dof(strip, node, UZ)),
         stiffness_tread=fet.tread_normal.ravel()[candidates],
         gap0=tz.ravel()[candidates] - road_height0,
         road_height0=road_height0,
@@ -267,11 +281,15 @@ def solve_static(
 
 def make_road(road: str, drum_radius: float | None = None) -> RoadSurface:
     """A :class:`RoadSurface` from its name; the drum radius defaults to the cleat-test drum."""
-    if road == "drum" and drum_radius is None:
+    if road not in ("flat", "drum"):
+        raise ValueError(f"road = {road!r}: valid values are 'flat' and 'drum'")
+    if road == "flat":
+        return RoadSurface("flat")
+    if drum_radius is None:
         from .conditions import load_conditions
 
         drum_radius = load_conditions("cleat_test")["drum"]["radius"]
-    return RoadSurface(road, np.inf if road == "flat" else float(drum_radius))
+    return RoadSurface("drum", float(drum_radius))
 
 
 def _state_from_solution(
@@ -329,3 +347,28 @@ def load_deflection(
     """Deflection (m) at each load (N): the load-deflection curve of the tire."""
     problem = contact_problem(fet, make_road(road, drum_radius))
     return np.array([problem.solve(float(w))[1] for w in np.atleast_1d(loads)])
+
+
+def static_summary(states: dict[str, StaticState]) -> pd.DataFrame:
+    """Key numbers of one or more static states (columns), in the paper's units."""
+    rows = {}
+    for name, st in states.items():
+        t = st.tasselli
+        rows[name] = {
+            "load (N)": st.load,
+            "deflection (mm)": st.deflection * 1e3,
+            "vertical stiffness, tangent (N/mm)": st.vertical_stiffness / 1e3,
+            "vertical stiffness, secant (N/mm)": st.load / st.deflection / 1e3,
+            "footprint length (mm)": st.footprint_length * 1e3,
+            "footprint width (mm)": st.footprint_width * 1e3,
+            "contact area (cm^2)": st.contact_area * 1e4,
+            "mean contact pressure (MPa)": st.mean_pressure / 1e6,
+            "peak contact pressure (MPa)": st.pressure.max() / 1e6,
+            "contact points": int(st.contact.sum()),
+            "tasselli": t.n,
+            "force balance (contact and hub = load to 1e-9)": bool(
+                abs(st.hub_force / st.load - 1.0) < 1e-9 and abs(st.contact_force.sum() / st.load - 1.0) < 1e-9
+            ),
+            "active-set iterations": st.iterations,
+        }
+    return pd.DataFrame(rows)

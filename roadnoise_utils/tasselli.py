@@ -23,6 +23,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
+import pandas as pd
 
 #: Longest tassello side that still resolves 5 cm wavelengths (paper abstract), m.
 MAX_TASSELLO_SIZE = 0.025
@@ -111,6 +112,22 @@ class Tasselli:
         """Displacement of each tassello for a road height field, :math:`u_i` (m), (n,)."""
         return np.bincount(self.node_tassello, weights=self.node_weight * self.node_averages(height), minlength=self.n)
 
+    def table(self) -> pd.DataFrame:
+        """One row per tassello (number from 1): row, column, centre, size (mm), area (cm^2), contact points."""
+        return pd.DataFrame(
+            {
+                "row": self.row + 1,
+                "column": self.column + 1,
+                "centre x (mm)": self.centre_x * 1e3,
+                "centre y (mm)": self.centre_y * 1e3,
+                "length (mm)": self.length * 1e3,
+                "width (mm)": self.width * 1e3,
+                "area (cm^2)": self.area * 1e4,
+                "contact points": np.bincount(self.node_tassello, minlength=self.n),
+            },
+            index=pd.Index(self.numbers, name="tassello"),
+        )
+
     def membership(self) -> np.ndarray:
         """Matrix (n, n_nodes) with ``[i, m] = 1`` where contact node m belongs to tassello i."""
         out = np.zeros((self.n, self.node_x.size))
@@ -198,7 +215,11 @@ def tassellate(
         node_weight=weight,
         row=unique_keys // (columns.max() + 1),
         column=unique_keys % (columns.max() + 1),
-        centre_x=np.bincount(node_tassello, weights=weight * node_x, minlength=n),
+        # centroid of the shape-function kernel: a hat over [x - dx_minus, x + dx_plus] has its
+        # centroid at x + (dx_plus - dx_minus) / 3, so linear road fields average to the centre
+        centre_x=np.bincount(
+            node_tassello, weights=weight * (node_x + (node_dx_plus - node_dx_minus) / 3), minlength=n
+        ),
         centre_y=np.bincount(node_tassello, weights=weight * node_y, minlength=n),
         area=tassello_area,
         bounds=bounds,

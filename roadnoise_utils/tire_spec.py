@@ -19,6 +19,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import pandas as pd
+
 from .paths import data_dir
 from .viscoelastic import FractionalZener
 
@@ -344,3 +346,34 @@ def load_tire(name: str | Path) -> TireSpec:
     with open(path, "rb") as fh:
         data = tomllib.load(fh)
     return from_dict(data, source=path.name)
+
+
+def tire_table(spec: TireSpec) -> pd.DataFrame:
+    """Every parameter of a tire with its unit, valid range and meaning."""
+    rows = []
+    for section, cls in _SECTIONS.items():
+        obj = getattr(spec, section)
+        for f in dataclasses.fields(cls):
+            rows.append(
+                {
+                    "section": section,
+                    "parameter": f.name,
+                    "value": getattr(obj, f.name),
+                    "unit": f.metadata["unit"],
+                    "valid range": "[{:g}, {:g}]".format(*f.metadata["range"]),
+                    "meaning": f.metadata["doc"],
+                }
+            )
+    for name, compound in sorted(spec.compounds.items()):
+        for f in dataclasses.fields(Compound):
+            rows.append(
+                {
+                    "section": f"compounds.{name}",
+                    "parameter": f.name,
+                    "value": getattr(compound, f.name),
+                    "unit": f.metadata["unit"],
+                    "valid range": "[{:g}, {:g}]".format(*f.metadata["range"]),
+                    "meaning": f.metadata["doc"],
+                }
+            )
+    return pd.DataFrame(rows).set_index(["section", "parameter"])

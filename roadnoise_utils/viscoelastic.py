@@ -20,6 +20,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import pandas as pd
 from numpy.typing import ArrayLike
 
 
@@ -65,3 +66,18 @@ class FractionalZener:
         """Loss factor :math:`\\eta = E''/E'` (-)."""
         g = self.ratio(omega)
         return np.imag(g) / np.real(g)
+
+
+def compound_table(laws: dict[str, FractionalZener], f_low: float = 1.0, f_high: float = 250.0) -> pd.DataFrame:
+    """Storage rise from ``f_low`` to ``f_high`` (Hz) and loss factors of each compound."""
+    w_low, w_high = 2 * np.pi * f_low, 2 * np.pi * f_high
+    rows = {
+        name: {
+            f"storage rise {f_low:g}->{f_high:g} Hz": float(law.storage(w_high) / law.storage(w_low) - 1.0),
+            f"loss factor at {f_low:g} Hz": float(law.loss_factor(w_low)),
+            "loss factor at 80 Hz": float(law.loss_factor(2 * np.pi * 80.0)),
+            f"loss factor at {f_high:g} Hz": float(law.loss_factor(w_high)),
+        }
+        for name, law in laws.items()
+    }
+    return pd.DataFrame(rows).T.rename_axis("compound")

@@ -1,0 +1,82 @@
+# ---
+# jupyter:
+#   jupytext:
+#     formats: ipynb,py:percent
+#     text_representation:
+#       extension: .py
+#       format_name: percent
+#       format_version: '1.3'
+#   kernelspec:
+#     display_name: Python 3 (ipykernel)
+#     language: python
+#     name: python3
+# ---
+
+# %% [markdown]
+# # 00 — Overview: the road-noise (RM) model and a map of this collection
+#
+# Belluzzo, Mancosu, Sangalli, Cheli and Bruni, *New Predictive Model for the Study of
+# Vertical Forces (up to 250 Hz) Induced on the Tire Hub by Road Irregularities*, Tire Science
+# and Technology 30(1), 2002, pp. 2-18.
+#
+# The RM model predicts the **vertical force on the tire hub, 0-250 Hz**, caused by road
+# irregularities with wavelengths above 5 cm (pavement megatexture). Its idea (paper Fig. 1):
+#
+# 1. take a detailed finite-element tire (FET, ~8000 DOF, viscoelastic rubber) and load it
+#    on the road;
+# 2. divide the footprint into ~71 blocks, the *tasselli*, and compute the frequency response
+#    $H_i(\omega)$ from the vertical displacement of each tassello to the hub force —
+#    fast, through a modal model frozen at ~70 Hz with damping identified from the full
+#    viscoelastic model; check that $\sum_i H_i = H_{tot}$ (Eq. i, Fig. 5);
+# 3. fit each $H_i$ with an 8-pole/8-zero transfer function (Eq. 1, Fig. 6) and stack the
+#    state-space models into one time-domain tire (Eq. 2-4);
+# 4. drive it with the road flowing through the footprint: a cleat on a drum with the hub
+#    fixed (Fig. 8-9), or, with a moving hub (Eq. 5-7), a vehicle model on rough and
+#    smooth textures (Fig. 10-14).
+#
+# Each stage is a notebook; all logic lives in the `roadnoise_utils` package and every number
+# is computed. Each notebook runs alone: earlier stages come from a cache keyed by their inputs.
+
+# %%
+import matplotlib.pyplot as plt
+
+import roadnoise_utils as ru
+from roadnoise_utils import collection, plotting
+
+ru.set_style()
+
+# %%
+# Fig. 1 analogue: the RM pipeline and the notebook of each stage
+plotting.plot_rm_pipeline()
+plt.show()
+
+# %% [markdown]
+# ## Map of the collection
+#
+# Generated from `data/collection.toml`, the same source as the README's table.
+
+# %%
+# The notebooks, the paper section and figures each reproduces
+collection.notebook_table(link_prefix="")
+
+# %% [markdown]
+# ## Public entry points
+#
+# ```python
+# import roadnoise_utils as ru
+# tire   = ru.load_tire("165_65R14")            # validated TireSpec from data/tires/*.toml
+# fet    = ru.build_fet(tire)                   # FETModel: sparse M, K(ω) parts, DOF maps
+# static = ru.solve_static(fet, road="flat")    # or road="drum": footprint, pressures, tasselli
+# visco  = ru.frf_visco(fet, static, freqs)     # direct FRFs: H_tot, H_i, G_H (fixed hub)
+# ```
+#
+# The cached versions used by the notebooks are in `roadnoise_utils.pipeline`
+# (`static_state`, `visco_frf`, `modes`).
+
+# %%
+# NBVAL_CHECK_OUTPUT
+# The tires available in data/tires and their size
+for name in ("165_65R14", "195_65R15"):
+    spec = ru.load_tire(name)
+    print(f"{name}: {spec.name}, {spec.operating.inflation_pressure / 1e5:.1f} bar, "
+          f"{spec.operating.vertical_load:.0f} N, outer radius {spec.geometry.outer_radius * 1e3:.1f} mm")
