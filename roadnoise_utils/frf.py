@@ -84,18 +84,37 @@ class HubForceSolver:
         self._parts = {name: (basis.T @ m @ basis).tocsc() for name, m in parts.items()}
         self._footprint = np.asarray(loaded.road_input.sum(axis=1)).ravel()
 
-    def dynamic_stiffness(self, omega: float, storage_only: bool = False) -> sp.csc_matrix:
-        """Reduced (or full) :math:`D(\\omega)`."""
+    def stiffness(self, omega: float, storage_only: bool = False) -> sp.csc_matrix:
+        r"""Reduced (or full) stiffness :math:`K(\omega)` (complex unless ``storage_only``)."""
         g = self.loaded.ratios(omega, storage_only)
-        total = self._parts["elastic"].astype(float if storage_only else complex) - omega**2 * self._parts["mass"]
+        total = self._parts["elastic"].astype(float if storage_only else complex)
         for name, g_c in g.items():
             total = total + (g_c.real if storage_only else g_c) * self._parts[name]
         return total.tocsc()
 
-    def solve(self, omega: float) -> dict[str, np.ndarray | complex]:
-        """Point FRFs, hub FRF and the forward whole-footprint FRF at ``omega`` (rad/s)."""
+    @property
+    def mass(self) -> sp.csc_matrix:
+        """Reduced (or full) mass matrix."""
+        return self._parts["mass"]
+
+    @property
+    def basis_matrix(self) -> sp.csr_matrix:
+        """Columns spanning the solved subspace (the identity when not reduced)."""
+        return self._basis
+
+    def dynamic_stiffness(self, omega: float, storage_only: bool = False) -> sp.csc_matrix:
+        r"""Reduced (or full) :math:`D(\omega) = K(\omega) - \omega^2 M`."""
+        return (self.stiffness(omega, storage_only) - omega**2 * self.mass).tocsc()
+
+    def solve(self, omega: float, inertia: bool = True) -> dict[str, np.ndarray | complex]:
+        """Point FRFs, hub FRF and the forward whole-footprint FRF at ``omega`` (rad/s).
+
+        With ``inertia=False`` the mass term is dropped: the quasi-static response with the
+        moduli at ``omega`` (used by the residual correction of :mod:`.modal`).
+        """
         lt = self.loaded
-        lu = spla.splu(self.dynamic_stiffness(omega), permc_spec="NATURAL")
+        matrix = self.dynamic_stiffness(omega) if inertia else self.stiffness(omega)
+        lu = spla.splu(matrix, permc_spec="NATURAL")
         row = lt.hub_row(omega)
         t = self._basis
         y = t @ lu.solve(np.asarray(t.T @ row), trans="T")
@@ -116,6 +135,7 @@ def frf_visco(
     freqs: np.ndarray,
     progress: bool = True,
     use_symmetry: bool = True,
+    stick: bool = True,
 ) -> FRFResult:
     """Direct viscoelastic FRFs of the loaded tire with the hub fixed (FETvisco).
 
@@ -131,6 +151,8 @@ def frf_visco(
         Show a progress bar.
     use_symmetry : bool
         Use the exact mirror-symmetric reduction when the state allows it.
+    stick : bool
+        The footprint sticks to the road longitudinally (default) or slides freely.
 
     Returns
     -------
@@ -140,7 +162,7 @@ def frf_visco(
     freqs = np.asarray(freqs, dtype=float)
     if freqs.ndim != 1 or freqs.size == 0 or not np.all(np.isfinite(freqs)) or np.any(freqs < 0):
         raise ValueError("freqs must be a non-empty 1-D array of finite frequencies >= 0 Hz")
-    solver = HubForceSolver(loaded_tire(fet, static), use_symmetry=use_symmetry)
+    solver = HubForceSolver(loaded_tire(fet, static, stick=stick), use_symmetry=use_symmetry)
     points = np.empty((solver.loaded.n_contact, freqs.size), complex)
     hub = np.empty(freqs.size, complex)
     total = np.empty(freqs.size, complex)

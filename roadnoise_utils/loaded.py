@@ -102,7 +102,7 @@ class LoadedTire:
         return self.hub_hub_elastic + sum(g[name] * v for name, v in self.hub_hub_compound.items())
 
 
-def _contact_springs(fet: FETModel, static: StaticState) -> tuple[sp.csr_matrix, sp.csr_matrix]:
+def _contact_springs(fet: FETModel, static: StaticState, stick: bool) -> tuple[sp.csr_matrix, sp.csr_matrix]:
     """Tread springs of the contact points (full DOF) and the road-input matrix (full DOF x contact)."""
     mesh = fet.mesh
     t = static.tasselli
@@ -113,21 +113,25 @@ def _contact_springs(fet: FETModel, static: StaticState) -> tuple[sp.csr_matrix,
     ks = fet.tread_shear[strip, node]
     diag = np.zeros(fet.n_dof)
     diag[dz] += kn
-    diag[dx] += ks
+    if stick:
+        diag[dx] += ks
     k_tread = sp.diags(diag).tocsr()
     b = sp.csr_matrix((kn, (dz, np.arange(strip.size))), shape=(fet.n_dof, strip.size))
     return k_tread, b
 
 
-def loaded_tire(fet: FETModel, static: StaticState) -> LoadedTire:
+def loaded_tire(fet: FETModel, static: StaticState, stick: bool = True) -> LoadedTire:
     """Linearise the FET about a static state, fixed hub, footprint tied to the road.
 
     The inputs are the contact points in the order of ``static.tasselli`` (``node_*`` arrays).
+    With ``stick=False`` the contact points slide freely along the road (no tread shear
+    spring): the paper's check that "lateral and longitudinal displacements of the footprint
+    nodes give an insignificant contribution" to the vertical hub force.
     """
     mesh = fet.mesh
     free = np.setdiff1d(np.arange(fet.n_dof), mesh.hub_dofs)
     hub = mesh.hub_dofs[1]
-    k_tread, b = _contact_springs(fet, static)
+    k_tread, b = _contact_springs(fet, static, stick)
     compounds = dict(fet.K_compound)
     compounds["tread"] = k_tread
 

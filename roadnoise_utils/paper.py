@@ -46,3 +46,10 @@ def comparison_table(rows: list[tuple[str, str, float, float, str]]) -> pd.DataF
             }
         )
     return pd.DataFrame(out).set_index("quantity")
+
+
+def claims_table(rows: list[tuple[str, str, str, bool]]) -> pd.DataFrame:
+    """A "claim / paper / ours / ok" table for claims that are statements rather than numbers."""
+    return pd.DataFrame([{"claim": c, "paper": p, "ours": o, "ok": bool(ok)} for c, p, o, ok in rows]).set_index(
+        "claim"
+    )

@@ -12,6 +12,7 @@ import numpy as np
 from .cache import cached
 from .fet import FETModel, build_fet
 from .frf import FRFResult, frf_visco
+from .modal import ModalReduction, modal_reduction
 from .modes import LoadedModes, loaded_modes
 from .static import StaticState, make_road, solve_static
 from .tire_spec import TireSpec, load_tire
@@ -88,4 +89,37 @@ def modes(
     static = static_state(spec, road, load, drum_radius)
     return cached(
         "modes", inputs, lambda: loaded_modes(build_fet(spec), static, int(n_modes), float(reference_frequency))
+    )
+
+
+def modal(
+    tire: str | TireSpec,
+    road: str = "flat",
+    frozen: str = "complex",
+    damping: str = "identified",
+    reference_frequency: float | None = None,
+    load: float | None = None,
+    drum_radius: float | None = None,
+) -> ModalReduction:
+    """Cached :func:`.modal.modal_reduction` on the default direct sweep (0-400 Hz)."""
+    spec = tire_spec(tire)
+    inputs = {
+        **_road_inputs(spec, road, load, drum_radius),
+        "frozen": frozen,
+        "damping": damping,
+        "reference_frequency": reference_frequency,
+    }
+    static = static_state(spec, road, load, drum_radius)
+    visco = visco_frf(spec, road, load=load, drum_radius=drum_radius, progress=False)
+    return cached(
+        "modal",
+        inputs,
+        lambda: modal_reduction(
+            build_fet(spec),
+            static,
+            visco=visco,
+            reference_frequency=reference_frequency,
+            frozen=frozen,
+            damping=damping,
+        ),
     )
