@@ -8,17 +8,21 @@ Public entry points (DESIGN section 6)::
     static = ru.solve_static(fet, road="flat")  # or road="drum": footprint, pressures, tasselli
     visco  = ru.frf_visco(fet, static, freqs)   # direct FRFs: H_tot, H_i, G_H (fixed hub)
     reduced = ru.modal_reduction(fet, static, visco=visco)  # damping id., frozen modes, modal H_i
+    fits   = ru.fit_tasselli(visco.freqs, visco.H, n_poles=14)  # one rational fit per tassello (Eq. 1)
+    tire_F = ru.assemble_fixed_hub(fits)        # python-control StateSpace (A_F, B_F, C_F, D_F), Eq. 3-4
 
 Cached stage results for the notebooks: :mod:`roadnoise_utils.pipeline`.
 """
 
-from . import analysis, collection, paper, pipeline
+from . import analysis, collection, paper, peers, pipeline
 from .calibration import calibration_table
 from .fet import FETModel, build_fet
+from .fitting import FitSet, RationalFit, fit_tasselli, vector_fit
 from .frf import FRFResult, frf_visco
 from .modal import ModalReduction, identify_modes, modal_reduction
 from .modes import LoadedModes, loaded_modes
 from .ring import ring_check, ring_frequencies, ring_parameters
+from .statespace import assemble_fixed_hub, realize
 from .static import StaticState, load_deflection, solve_static
 from .style import set_style
 from .tasselli import Tasselli
@@ -30,15 +34,20 @@ __all__ = [
     "analysis",
     "collection",
     "paper",
+    "peers",
     "FETModel",
     "FRFResult",
+    "FitSet",
+    "RationalFit",
     "LoadedModes",
     "ModalReduction",
     "StaticState",
     "Tasselli",
     "TireSpec",
+    "assemble_fixed_hub",
     "build_fet",
     "calibration_table",
+    "fit_tasselli",
     "frf_visco",
     "identify_modes",
     "load_deflection",
@@ -46,9 +55,11 @@ __all__ = [
     "loaded_modes",
     "modal_reduction",
     "pipeline",
+    "realize",
     "ring_check",
     "ring_frequencies",
     "ring_parameters",
     "set_style",
     "solve_static",
+    "vector_fit",
 ]

@@ -11,6 +11,7 @@ import numpy as np
 
 from .cache import cached
 from .fet import FETModel, build_fet
+from .fitting import FitSet, fit_tasselli, lowest_order
 from .frf import FRFResult, frf_visco
 from .modal import ModalReduction, modal_reduction
 from .modes import LoadedModes, loaded_modes
@@ -123,3 +124,63 @@ def modal(
             damping=damping,
         ),
     )
+
+
+#: Relative RMS error every tassello's fit must meet when the order is chosen automatically.
+FIT_TOLERANCE = 0.01
+
+
+def tassello_fits(
+    tire: str | TireSpec,
+    road: str = "flat",
+    n_poles: int | None = None,
+    f_max: float = 250.0,
+    load: float | None = None,
+    drum_radius: float | None = None,
+) -> FitSet:
+    """Cached rational fits of the direct local FRFs :math:`H_i` over 0-``f_max`` Hz.
+
+    ``n_poles=None`` takes the lowest order at which every tassello is fitted within
+    :data:`FIT_TOLERANCE` (see notebook 03 for why the direct FRFs and this order).
+    """
+    spec = tire_spec(tire)
+    inputs = {
+        **_road_inputs(spec, road, load, drum_radius),
+        "n_poles": n_poles,
+        "f_max": float(f_max),
+        "tolerance": FIT_TOLERANCE,
+    }
+    visco = visco_frf(spec, road, load=load, drum_radius=drum_radius, progress=False)
+
+    def compute() -> FitSet:
+        if n_poles is None:
+            return lowest_order(visco.freqs, visco.H, tolerance=FIT_TOLERANCE, f_max=f_max)
+        return fit_tasselli(visco.freqs, visco.H, n_poles=n_poles, f_max=f_max)
+
+    return cached("tassello_fits", inputs, compute)
+
+
+def hub_fit(
+    tire: str | TireSpec,
+    road: str = "flat",
+    n_poles: int | None = None,
+    f_max: float = 250.0,
+    load: float | None = None,
+    drum_radius: float | None = None,
+) -> FitSet:
+    """Cached rational fit of the hub FRF :math:`G_H` (same order rule as :func:`tassello_fits`)."""
+    spec = tire_spec(tire)
+    inputs = {
+        **_road_inputs(spec, road, load, drum_radius),
+        "n_poles": n_poles,
+        "f_max": float(f_max),
+        "tolerance": FIT_TOLERANCE,
+    }
+    visco = visco_frf(spec, road, load=load, drum_radius=drum_radius, progress=False)
+
+    def compute() -> FitSet:
+        if n_poles is None:
+            return lowest_order(visco.freqs, visco.G_H, tolerance=FIT_TOLERANCE, f_max=f_max)
+        return fit_tasselli(visco.freqs, visco.G_H, n_poles=n_poles, f_max=f_max)
+
+    return cached("hub_fit", inputs, compute)
