@@ -10,11 +10,13 @@ Public entry points (DESIGN section 6)::
     reduced = ru.modal_reduction(fet, static, visco=visco)  # damping id., frozen modes, modal H_i
     fits   = ru.fit_tasselli(visco.freqs, visco.H, n_poles=14)  # one rational fit per tassello (Eq. 1)
     tire_F = ru.assemble_fixed_hub(fits)        # python-control StateSpace (A_F, B_F, C_F, D_F), Eq. 3-4
+    u      = ru.cleat_input(static, speed=30/3.6)  # RoadInput: t, u[tassello, t] (cleat on the drum)
+    force  = ru.simulate(tire_F, u)             # fast LTI simulation: hub force (N) vs time/distance
 
 Cached stage results for the notebooks: :mod:`roadnoise_utils.pipeline`.
 """
 
-from . import analysis, collection, paper, peers, pipeline
+from . import analysis, cleat, collection, conditions, paper, peers, pipeline
 from .calibration import calibration_table
 from .fet import FETModel, build_fet
 from .fitting import FitSet, RationalFit, fit_tasselli, vector_fit
@@ -22,6 +24,8 @@ from .frf import FRFResult, frf_visco
 from .modal import ModalReduction, identify_modes, modal_reduction
 from .modes import LoadedModes, loaded_modes
 from .ring import ring_check, ring_frequencies, ring_parameters
+from .road import RoadInput, cleat_input
+from .simulation import SimulationResult, simulate
 from .statespace import assemble_fixed_hub, realize
 from .static import StaticState, load_deflection, solve_static
 from .style import set_style
@@ -32,13 +36,17 @@ __version__ = "0.1.0"
 
 __all__ = [
     "analysis",
+    "cleat",
     "collection",
+    "conditions",
     "paper",
     "peers",
     "FETModel",
     "FRFResult",
     "FitSet",
     "RationalFit",
+    "RoadInput",
+    "SimulationResult",
     "LoadedModes",
     "ModalReduction",
     "StaticState",
@@ -47,6 +55,7 @@ __all__ = [
     "assemble_fixed_hub",
     "build_fet",
     "calibration_table",
+    "cleat_input",
     "fit_tasselli",
     "frf_visco",
     "identify_modes",
@@ -60,6 +69,7 @@ __all__ = [
     "ring_frequencies",
     "ring_parameters",
     "set_style",
+    "simulate",
     "solve_static",
     "vector_fit",
 ]

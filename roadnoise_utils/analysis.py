@@ -81,3 +81,60 @@ def peak_comparison(
 def format_small(value: float, floor: float = 1e-9) -> str:
     """``"< floor"`` for round-off-sized values, else ``value`` in ``.1e``: stable printed output."""
     return f"< {floor:.0e}" if abs(value) < floor else f"{value:.1e}"
+
+
+def damped_components(y: np.ndarray, dt: float, n_components: int = 6) -> pd.DataFrame:
+    """Damped sinusoids in a free decay, by the matrix pencil method (Hua & Sarkar 1990).
+
+    ``y`` (uniform step ``dt`` s) is modelled as :math:`\\sum_k a_k e^{s_k t}`; the poles come
+    from the signal itself (a shifted-Hankel eigenproblem), the amplitudes by least squares.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per oscillating component (conjugate pairs merged), largest amplitude first:
+        ``frequency (Hz)``, ``damping ratio``, ``amplitude`` (peak value at the start of ``y``).
+    """
+    y = np.asarray(y, dtype=float)
+    if y.ndim != 1 or y.size < 4 * n_components or not np.all(np.isfinite(y)):
+        raise ValueError(f"need a finite 1-D decay of at least {4 * n_components} samples")
+    order = 2 * n_components
+    pencil = y.size // 3
+    hankel = np.lib.stride_tricks.sliding_window_view(y, pencil + 1)  # (N - L, L + 1)
+    _, _, vt = np.linalg.svd(hankel, full_matrices=False)
+    v = vt[:order].T
+    z = np.linalg.eigvals(np.linalg.pinv(v[:-1]) @ v[1:])
+    s = np.log(z.astype(complex)) / dt
+    basis = np.exp(np.outer(np.arange(y.size) * dt, s))
+    amplitude = np.linalg.lstsq(basis, y.astype(complex), rcond=None)[0]
+    rows = []
+    for sk, ak in zip(s, amplitude):
+        if sk.imag <= 0:
+            continue  # keep the upper member of each pair
+        omega = abs(sk)
+        rows.append(
+            {"frequency (Hz)": sk.imag / (2 * np.pi), "damping ratio": -sk.real / omega, "amplitude": 2 * abs(ak)}
+        )
+    table = pd.DataFrame(rows).sort_values("amplitude", ascending=False, ignore_index=True)
+    table.index = pd.Index(np.arange(1, len(table) + 1), name="component")
+    return table
+
+
+def force_peaks(
+    distance: np.ndarray,
+    force: np.ndarray,
+    n: int = 2,
+    min_separation: float = 0.02,
+    window: tuple[float, float] = (-np.inf, np.inf),
+) -> pd.DataFrame:
+    """The ``n`` largest local maxima of a force history inside ``window`` (m), at least
+    ``min_separation`` m apart, in order of distance."""
+    step = float(np.median(np.diff(distance)))
+    idx, _ = find_peaks(force, distance=max(1, int(min_separation / step)))
+    idx = idx[(distance[idx] >= window[0]) & (distance[idx] <= window[1])]
+    top = idx[np.argsort(force[idx])[::-1][:n]]
+    top = np.sort(top)
+    return pd.DataFrame(
+        {"distance (m)": distance[top], "force (N)": force[top]},
+        index=pd.Index(np.arange(1, top.size + 1), name="peak"),
+    )

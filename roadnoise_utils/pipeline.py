@@ -184,3 +184,26 @@ def hub_fit(
         return fit_tasselli(visco.freqs, visco.G_H, n_poles=n_poles, f_max=f_max)
 
     return cached("hub_fit", inputs, compute)
+
+
+def fixed_hub_tire(tire: str | TireSpec, road: str = "flat", n_poles: int | None = None):
+    """The assembled fixed-hub state-space tire (Eq. 3-4) from the cached fits."""
+    from .statespace import assemble_fixed_hub
+
+    return assemble_fixed_hub(tassello_fits(tire, road, n_poles))
+
+
+def cleat_fe(tire: str | TireSpec, speed: float, duration: float = 1.0) -> tuple:
+    """Cached FE frequency-domain cleat response on the drum: ``(road, force)``, force band-limited to 250 Hz."""
+    from .cleat import fe_cleat_response
+    from .road import cleat_input
+
+    spec = tire_spec(tire)
+    inputs = {**_road_inputs(spec, "drum", None, None), "speed": float(speed), "duration": float(duration)}
+    static = static_state(spec, "drum")
+
+    def compute():
+        road = cleat_input(static, speed)
+        return road, fe_cleat_response(build_fet(spec), static, road, duration=duration)
+
+    return cached("cleat_fe", inputs, compute)

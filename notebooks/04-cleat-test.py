@@ -1,0 +1,289 @@
+# ---
+# jupyter:
+#   jupytext:
+#     formats: ipynb,py:percent
+#     text_representation:
+#       extension: .py
+#       format_name: percent
+#       format_version: '1.3'
+#   kernelspec:
+#     display_name: Python 3 (ipykernel)
+#     language: python
+#     name: python3
+# ---
+
+# %% [markdown]
+# # 04 — The cleat test on the drum, hub fixed
+#
+# **Paper stage 8** (section *Validation of the Model for Fixed Hub*, Fig. 8 and 9; section
+# *Simulation of Wheel-Road Interaction* for the road input).
+#
+# The paper validates the fixed-hub model (Eq. 3) against an indoor cleat test: the 165/65 R14
+# on a 4J rim at 2.3 bar and 4512 N rolls over a drum of radius 1.25 m carrying a triangular
+# cleat 15 mm long and 15 mm high, once quasi-statically ("base curve") and once at 30 km/h
+# ("dynamic curve"). It reports:
+#
+# * two force peaks while the cleat crosses the footprint, in both runs;
+# * measured: the dynamic maximum "about 2.2 times" the quasi-static one (850 N);
+# * simulated: quasi-static maximum 1200 N (above the measured 850 N, which the authors put
+#   down to contact loss, a nonlinearity the linear model cannot show), dynamic maximum "very
+#   close to the measured one";
+# * after the cleat has left the footprint, a decay dominated by the 80 Hz first vertical mode.
+#
+# Here the road flows through the footprint (each tassello's displacement is the
+# shape-function-weighted average of the drum surface under it), the state-space tire of
+# notebook 03 — fitted on the drum footprint — is simulated in the time domain, and the same
+# response is computed a second way, straight from the viscoelastic FE model in the frequency
+# domain.
+
+# %%
+import matplotlib.pyplot as plt
+import numpy as np
+
+import roadnoise_utils as ru
+from roadnoise_utils import cleat, pipeline, plotting
+from roadnoise_utils.simulation import modal_sections
+
+ru.set_style()
+
+# %% tags=["parameters"]
+# Parameters (papermill): tire file, speeds (km/h), cleat (m; None = the paper's, from data/conditions)
+tire_name = "165_65R14"
+speed_kmh = 30.0
+quasi_static_kmh = 0.36
+cleat_height = None
+cleat_base = None
+
+# %% [markdown]
+# ## 1. The tire on the drum
+#
+# The footprint on the 1.25 m drum is shorter than on a flat road (notebook 01); its tasselli,
+# direct FRFs, fits and state-space model are computed for this footprint (cached stages).
+
+# %%
+# NBVAL_IGNORE_OUTPUT
+# The loaded tire on the drum and its fixed-hub state-space model (cached)
+tire = ru.load_tire(tire_name)
+drum = pipeline.static_state(tire, road="drum")
+tire_F = pipeline.fixed_hub_tire(tire, road="drum")
+sections = modal_sections(tire_F)  # the decomposition the fast simulation runs, reused for every run
+conditions = ru.conditions.load_conditions("cleat_test")
+height = cleat_height or conditions["cleat"]["height"]
+base = cleat_base or conditions["cleat"]["base"]
+
+# %%
+# NBVAL_CHECK_OUTPUT
+# The test
+print(f"{tire.name}: drum R = {drum.road.drum_radius:.2f} m, footprint {drum.footprint_length * 1e3:.0f} mm long, "
+      f"{drum.tasselli.n} tasselli; state-space tire: {tire_F.nstates} states, {tire_F.ninputs} inputs")
+print(f"cleat: {conditions['cleat']['shape']}, base {base * 1e3:.0f} mm, height {height * 1e3:.0f} mm")
+
+# %% [markdown]
+# ## 2. The road flowing through the footprint
+#
+# At distance $d$ the footprint point at $x$ sees the drum surface at $x + d$; each tassello's
+# displacement is the correlation of the cleat profile with the tassello's shape-function
+# kernel. The sample rate follows from the band (20 samples per period of 250 Hz) and the speed
+# (at most 1 mm of road per sample).
+
+# %%
+# Tassello displacements at 30 km/h, the centre column, leading, middle and trailing rows
+dynamic_road = ru.cleat_input(drum, speed_kmh / 3.6, height=height, base=base, distance=(-0.1, 0.6))
+last_row = int(drum.tasselli.row.max())
+plotting.plot_tassello_inputs(dynamic_road, drum, [0, last_row // 2, last_row])
+plt.xlim(-0.1, 0.15)
+plt.show()
+
+# %%
+# NBVAL_CHECK_OUTPUT
+# Sampling of the two runs
+print(f"30 km/h: {dynamic_road.sample_rate:.0f} Hz, {dynamic_road.u.shape[1]} samples of {dynamic_road.u.shape[0]} inputs")
+quasi_road = ru.cleat_input(drum, quasi_static_kmh / 3.6, height=height, base=base, distance=(-0.1, 0.15))
+print(f"{quasi_static_kmh} km/h: {quasi_road.sample_rate:.0f} Hz, {quasi_road.u.shape[1]} samples")
+
+# %% [markdown]
+# ## 3. The simulation (Fig. 8-9 analogue)
+#
+# The fixed-hub tire is a set of independent pole pairs, each driven by one tassello: every
+# pair is discretised exactly for an input linear between samples (first-order hold) and run
+# as a second-order IIR filter (`scipy.signal.lfilter`). No loop over time steps in Python.
+
+# %%
+# Quasi-static (base curve) and 30 km/h (dynamic curve) runs
+quasi = cleat.analyse_run(ru.simulate(sections, quasi_road), drum, base, dynamic=False)
+dynamic = cleat.analyse_run(ru.simulate(sections, dynamic_road), drum, base, dynamic=True)
+ax = plotting.plot_cleat_runs({f"base curve ({quasi_static_kmh} km/h)": quasi, f"dynamic curve ({speed_kmh:.0f} km/h)": dynamic},
+                              title="Fig. 9 analogue: simulated hub force during a cleat test")
+plt.show()
+
+# %%
+# NBVAL_CHECK_OUTPUT
+# The two peaks of each run while the cleat crosses the footprint
+print("quasi-static:\n" + quasi.peaks.to_string(float_format=lambda v: f"{v:.3f}"))
+print(f"{speed_kmh:.0f} km/h:\n" + dynamic.peaks.to_string(float_format=lambda v: f"{v:.3f}"))
+
+# %% [markdown]
+# Two peaks in both runs, as in the paper: one as the cleat enters the footprint, one as it
+# leaves. At 30 km/h the cleat crosses the ~100 mm footprint in 12 ms, about one period of the
+# first vertical mode, so the second passage pushes in phase with the ringing left by the first.
+#
+# ### The free decay
+#
+# After the cleat has left the footprint, the force is a sum of damped sinusoids; the matrix
+# pencil method (Hua & Sarkar 1990) extracts them from the signal alone — not from a mode
+# table.
+
+# %%
+# NBVAL_CHECK_OUTPUT
+# Damped components of the decay after the cleat has left (largest first)
+print(dynamic.decay.head(4).to_string(float_format=lambda v: f"{v:.3f}"))
+
+# %% [markdown]
+# ## 4. Paper vs ours
+
+# %%
+# NBVAL_CHECK_OUTPUT
+# Paper vs ours for the cleat test
+reported = {k: ru.paper.reported(k) for k in (
+    "cleat_quasi_static_simulated", "cleat_quasi_static_measured", "cleat_ratio_measured",
+    "cleat_dynamic_measured", "cleat_decay_frequency")}
+table = cleat.comparison_table(quasi, dynamic, reported)
+print(table.to_string(float_format=lambda v: f"{v:.2f}"))
+
+# %% [markdown]
+# **What we reproduce:** the shape — two peaks while crossing, then a decay whose leading
+# component is the first vertical mode at 80 Hz (within 1 %).
+#
+# **What we do not:** the size. Our quasi-static peak is about half the measured one (and a
+# third of the paper's simulation), and the dynamic amplification is ~1.2 instead of 2.2, so
+# the dynamic peak is a quarter of the measured one. The second mode (108 Hz) rings almost as
+# strongly as the first in our decay, where the paper sees the first dominate.
+#
+# Why: the force a cleat sends to the hub is set by the *static influence* of the footprint's
+# leading and trailing rows. In our ring-based tire the belt's inflation tension and bending
+# spread a local push over the whole footprint: the two edge rows of each side carry ~45 % of
+# the vertical stiffness, the middle rows almost nothing. The paper's 1200 N implies edge rows
+# about three times more influential, which a 3D FE tire with solid tread blocks and real
+# sidewalls gives and a ring on a foundation does not. The next cells show the influence
+# profile and that no plausible change of the ring's parameters closes the gap — it is the
+# model family, not a calibration error, so we keep the calibration of notebook 01 and record
+# the deviation.
+
+# %%
+# Static influence of each row along the drum footprint: where the two peaks come from
+visco_drum = pipeline.visco_frf(tire, road="drum", progress=False)
+static_influence = visco_drum.H[:, 0].real
+rows = cleat.row_influence(drum, static_influence)
+ax = plotting.plot_row_influence(rows, drum, base)
+ax.set_title("Static influence H_i(0) of each row: the cleat meets the large rows at entry and exit")
+plt.show()
+
+# %%
+# NBVAL_CHECK_OUTPUT
+# Row influences, and the quasi-static force straight from them (no dynamics at all)
+print((rows.round(1) + 0.0).to_string(float_format=lambda v: f"{v:.1f}"))  # + 0.0: no "-0.0"
+direct_quasi = cleat.quasi_static_force(static_influence, quasi_road)
+print(f"peak of sum_i H_i(0) u_i: {direct_quasi.max():.1f} N; simulated at {quasi_static_kmh} km/h: "
+      f"{quasi.peak_force:.1f} N")
+
+# %%
+# NBVAL_CHECK_OUTPUT
+# Sensitivity of the quasi-static peak to the tire's parameters (each row: one change, all else as calibrated)
+variants = {
+    "as calibrated": {},
+    "belt bending stiffness x 3": {"belt.bending_stiffness": 3 * tire.belt.bending_stiffness},
+    "tread 3 x stiffer": {"tread.normal_stiffness_per_area": 3 * tire.tread.normal_stiffness_per_area},
+    "sidewall rubber x 3 (radial)": {"foundation.radial_rubber": 3 * tire.foundation.radial_rubber},
+    "sidewalls 3 x stiffer at the edges": {"foundation.edge_factor": 3 * tire.foundation.edge_factor},
+}
+for name, change in variants.items():
+    spec = tire.replace(**change)
+    fet_variant = ru.build_fet(spec)
+    peak = cleat.quasi_static_peak(fet_variant, ru.solve_static(fet_variant, road="drum"), height, base)
+    print(f"{name:36s} quasi-static peak {peak:6.0f} N")
+
+# %% [markdown]
+# Tripling any one of the stiffnesses that shape the footprint moves the peak by at most
+# ~50 %, and the stiff-tread variant would break the footprint calibration — none reaches the
+# measured 850 N, let alone 1200 N.
+#
+# ## 5. Second method: the RM chain against the full FE model
+#
+# The same 30 km/h passage computed in the frequency domain straight from the viscoelastic FE
+# model, $F(\omega) = \sum_i H_i(\omega) U_i(\omega)$ with the direct $H_i$ at every FFT bin —
+# no modal reduction, no fitting, no time stepping. Both signals are band-limited to the RM
+# model's 250 Hz the same way (zero-phase).
+
+# %%
+# NBVAL_IGNORE_OUTPUT
+# FE frequency-domain response (cached) and the RM chain on the same road, band-limited to 250 Hz
+road, fe_force = pipeline.cleat_fe(tire, speed_kmh / 3.6)
+rm_force = cleat.band_limited(ru.simulate(sections, road).force, road.dt, n_fft=int(round(1.0 / road.dt)))
+
+# %%
+# RM chain vs FE model
+fig, ax = plt.subplots(figsize=(9, 4))
+ax.plot(road.distance, fe_force, "k", lw=2.5, label="FE model, frequency domain (direct H_i)")
+ax.plot(road.distance, rm_force, "--", color="tab:red", label="RM chain: fitted state space, time domain")
+ax.set_xlabel("distance travelled (m)")
+ax.set_ylabel("hub force, 0-250 Hz (N)")
+ax.legend()
+plt.show()
+
+# %%
+# NBVAL_CHECK_OUTPUT
+# Peak and RMS differences between the RM chain and the FE model
+peak_difference = rm_force.max() / fe_force.max() - 1
+rms_difference = np.sqrt(np.mean((rm_force - fe_force) ** 2) / np.mean(fe_force**2))
+print(f"peak: FE {fe_force.max():.1f} N, RM {rm_force.max():.1f} N, difference {peak_difference:+.2%}")
+print(f"RMS of the difference / RMS of the FE force: {rms_difference:.2%}")
+assert abs(peak_difference) < 0.02 and rms_difference < 0.02
+
+# %% [markdown]
+# The whole chain — tasselli, fits, realisation, discretisation, simulation — reproduces the
+# FE model to within the fit error: what separates us from the paper's numbers is the tire,
+# not the method.
+#
+# ## 6. The simulation against python-control
+#
+# The fast simulation must equal python-control's `forced_response` (dense, same FOH
+# assumption) on the same model and input.
+
+# %%
+# NBVAL_CHECK_OUTPUT
+# Fast block-diagonal simulation vs control.forced_response on 400 samples of the 30 km/h run
+import control
+
+short = ru.RoadInput(t=dynamic_road.t[:400], distance=dynamic_road.distance[:400], u=dynamic_road.u[:, 100:500],
+                     speed=dynamic_road.speed, description="excerpt")
+reference = control.forced_response(tire_F, T=short.t, U=short.u).outputs
+fast = ru.simulate(sections, short).force
+agreement = np.max(np.abs(fast - reference)) / np.max(np.abs(reference))
+print(f"max |ours - python-control| / max |python-control|: {ru.analysis.format_small(agreement, 1e-9)}")
+assert agreement < 1e-9
+
+# %% [markdown]
+# ## Explore: speed and cleat
+#
+# The callback builds the cleat input and runs the simulation with the package functions.
+
+# %%
+# NBVAL_IGNORE_OUTPUT
+# Widget: cleat test at any speed and cleat size
+from ipywidgets import FloatSlider, interact
+
+
+def show_cleat(speed_kmh=30.0, height_mm=15.0, base_mm=15.0):
+    run = cleat.run_cleat(sections, drum, speed_kmh / 3.6, height=height_mm / 1e3, base=base_mm / 1e3,
+                          distance=(-0.1, 0.6), dynamic=False)
+    plotting.plot_cleat_runs({f"{speed_kmh:.0f} km/h": run}, title=f"peak {run.peak_force:.0f} N")
+    plt.show()
+
+
+interact(show_cleat,
+         speed_kmh=FloatSlider(value=30.0, min=5.0, max=120.0, step=5.0, continuous_update=False),
+         height_mm=FloatSlider(value=15.0, min=2.0, max=30.0, step=1.0, continuous_update=False),
+         base_mm=FloatSlider(value=15.0, min=5.0, max=60.0, step=5.0, continuous_update=False))
+
+# %% [markdown]
+# **Next:** notebook 05 frees the hub (Eq. 5-7) so the tire can be coupled to a vehicle.

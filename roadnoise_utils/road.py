@@ -1,0 +1,244 @@
+"""Road inputs: the road flowing through the footprint, one displacement history per tassello.
+
+Paper, *Simulation of Wheel-Road Interaction*: "The time histories of the displacements due
+to road irregularity can be obtained by flowing a spatial distribution of road unevenness
+through the contact patch. The displacement pertaining to each tassello is then defined as a
+weighted average of all the physical displacements of the points inside the area of the
+tassello, where the weighting function consists of the shape functions of the finite elements."
+
+For a road that is uniform across the width (a cleat, a 2D profile), the weighted average of
+tassello ``i`` is a correlation of the profile :math:`z(x)` with a fixed kernel,
+
+.. math:: u_i(d) = \\int k_i(x)\\, z(x + d)\\, dx, \\qquad
+          k_i(x) = \\sum_{n \\in i} w_n \\frac{N_n(x)}{\\int N_n\\,dx},
+
+where ``d`` is the distance the wheel has travelled over the road and :math:`N_n` the
+bilinear shape function (hat) of contact point ``n`` (:mod:`.tasselli`). The kernel is
+evaluated on a fine grid and the correlation done by FFT for all tasselli at once.
+
+Distance convention: a footprint point at ``x`` sees road coordinate ``s = x + d`` after the
+wheel has travelled ``d``, so road features move towards -x (backwards) as ``d`` grows; a
+feature starting at ``s = 0`` (its leading edge, met first) is under the axle at ``d = 0``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.signal import fftconvolve
+
+from .static import StaticState
+from .tasselli import Tasselli
+
+#: Simulation band of the RM model (Hz), paper abstract: "0-250 Hz".
+BAND = 250.0
+#: Time samples per period of the band's top frequency, at least (FOH inputs, decay fits).
+SAMPLES_PER_PERIOD = 20
+#: Largest road step per sample (m): 1 mm resolves a 15 mm cleat and the 5.7 mm tread points.
+MAX_ROAD_STEP = 1.0e-3
+#: Road grid of slow runs (m): finer steps are interpolated linearly from this grid.
+ROAD_GRID = 1.0e-4
+
+
+@dataclass(frozen=True, eq=False)
+class RoadInput:
+    """Displacement histories of the tasselli.
+
+    Attributes
+    ----------
+    t : ndarray (n_samples,)
+        Time (s), uniform, starting at 0.
+    distance : ndarray (n_samples,)
+        Distance travelled (m), ``speed * t`` plus the start offset.
+    u : ndarray (n_tasselli, n_samples)
+        Vertical displacement of each tassello (m), positive up.
+    speed : float
+        Rolling speed (m/s).
+    description : str
+        What the road is.
+    """
+
+    t: np.ndarray
+    distance: np.ndarray
+    u: np.ndarray
+    speed: float
+    description: str
+
+    @property
+    def dt(self) -> float:
+        """Time step (s)."""
+        return float(self.t[1] - self.t[0])
+
+    @property
+    def sample_rate(self) -> float:
+        """Samples per second (Hz)."""
+        return 1.0 / self.dt
+
+
+def sample_rate_for(speed: float, band: float = BAND) -> float:
+    """Sample rate (Hz): at least ``SAMPLES_PER_PERIOD`` per period of ``band`` and a road
+    step of at most :data:`MAX_ROAD_STEP`, rounded up to a whole multiple of 100 Hz."""
+    fs = max(SAMPLES_PER_PERIOD * band, speed / MAX_ROAD_STEP)
+    return float(np.ceil(fs / 100.0) * 100.0)
+
+
+def check_sampling(speed: float, sample_rate: float, band: float = BAND) -> None:
+    """Refuse speeds and sample rates that cannot represent the band, naming the valid range."""
+    if not (np.isfinite(speed) and speed > 0):
+        raise ValueError(f"speed = {speed} m/s: valid range is (0, inf) m/s")
+    if not (np.isfinite(sample_rate) and sample_rate > 0):
+        raise ValueError(f"sample_rate = {sample_rate} Hz: must be a positive number")
+    needed = SAMPLES_PER_PERIOD * band
+    if sample_rate < needed:
+        raise ValueError(
+            f"sample_rate = {sample_rate:g} Hz is too coarse for the {band:g} Hz band: valid range is "
+            f">= {needed:g} Hz ({SAMPLES_PER_PERIOD} samples per period)"
+        )
+    step = speed / sample_rate
+    if step > MAX_ROAD_STEP:
+        raise ValueError(
+            f"road step speed/sample_rate = {step * 1e3:.2f} mm: valid range is <= {MAX_ROAD_STEP * 1e3:.1f} mm "
+            f"(raise sample_rate to >= {speed / MAX_ROAD_STEP:g} Hz at {speed:g} m/s)"
+        )
+
+
+def tassello_kernels(tasselli: Tasselli, step: float) -> tuple[np.ndarray, float]:
+    """Kernels :math:`k_i` on a uniform grid of spacing ``step`` (m): (n_tasselli, n_x) and x of column 0.
+
+    Each row integrates to one (trapezoidal rule); the hats are piecewise linear, so a fine
+    grid makes the correlation with a piecewise-linear road essentially exact.
+    """
+    x_lo = np.min(tasselli.node_x - tasselli.node_dx_minus)
+    x_hi = np.max(tasselli.node_x + tasselli.node_dx_plus)
+    x = np.arange(np.floor(x_lo / step) - 1, np.ceil(x_hi / step) + 2) * step
+    left = np.clip(1.0 + (x[None, :] - tasselli.node_x[:, None]) / tasselli.node_dx_minus[:, None], 0.0, 1.0)
+    right = np.clip(1.0 - (x[None, :] - tasselli.node_x[:, None]) / tasselli.node_dx_plus[:, None], 0.0, 1.0)
+    hats = np.where(x[None, :] <= tasselli.node_x[:, None], left, right)  # (n_nodes, n_x)
+    hats /= np.trapezoid(hats, dx=step, axis=1)[:, None]
+    kernels = np.zeros((tasselli.n, x.size))
+    np.add.at(kernels, tasselli.node_tassello, tasselli.node_weight[:, None] * hats)
+    kernels /= np.trapezoid(kernels, dx=step, axis=1)[:, None]
+    return kernels, float(x[0])
+
+
+def profile_input(
+    static: StaticState,
+    profile,
+    speed: float,
+    distance: tuple[float, float],
+    sample_rate: float | None = None,
+    oversample: int = 4,
+    description: str = "road profile",
+) -> RoadInput:
+    """Tassello displacements for a 2D road ``profile(s)`` (m) flowing through the footprint.
+
+    Parameters
+    ----------
+    static : StaticState
+        The loaded tire (its tasselli and their shape-function weights).
+    profile : callable
+        Road height (m) at road coordinate ``s`` (m, array); the footprint point at ``x``
+        sees ``profile(x + d)`` after the wheel has travelled ``d``.
+    speed : float
+        Rolling speed (m/s), > 0.
+    distance : (float, float)
+        Travel range (m) to simulate.
+    sample_rate : float, optional
+        Samples per second; default :func:`sample_rate_for`.
+    oversample : int
+        The correlation is done on a road grid ``oversample`` times finer than one time step
+        (or than :data:`ROAD_GRID` when a time step covers less road; the result is then
+        interpolated linearly to the time samples).
+    """
+    fs = sample_rate_for(speed) if sample_rate is None else float(sample_rate)
+    check_sampling(speed, fs)
+    d0, d1 = distance
+    if not d1 > d0:
+        raise ValueError(f"distance = {distance}: the end must exceed the start")
+    dt = 1.0 / fs
+    n = int(np.floor((d1 - d0) / (speed * dt))) + 1
+    t = dt * np.arange(n)
+    distance = d0 + speed * t
+    # road grid: one time step of road, but no finer than ROAD_GRID (slow runs are interpolated)
+    grid = max(speed * dt, min(ROAD_GRID, d1 - d0))
+    n_grid = int(np.ceil((d1 - d0) / grid)) + 1
+    step = grid / oversample
+    kernels, x0 = tassello_kernels(static.tasselli, step)
+    # road samples covering x + d for every kernel point x and every grid distance d
+    s = x0 + d0 + step * np.arange(kernels.shape[1] + (n_grid - 1) * oversample)
+    z = np.asarray(profile(s), dtype=float)
+    if z.shape != s.shape or not np.all(np.isfinite(z)):
+        raise ValueError("the road profile must return finite heights, one per road coordinate")
+    full = fftconvolve(z[None, :], kernels[:, ::-1], mode="valid", axes=1) * step  # correlation
+    on_grid = full[:, ::oversample][:, :n_grid]
+    if grid == speed * dt:
+        u = on_grid[:, :n]
+    else:
+        position = (distance - d0) / grid
+        left = np.minimum(np.floor(position).astype(int), n_grid - 2)
+        frac = position - left
+        u = on_grid[:, left] * (1 - frac) + on_grid[:, left + 1] * frac
+    return RoadInput(t=t, distance=distance, u=u, speed=float(speed), description=description)
+
+
+def cleat_profile(height: float, base: float, shape: str = "triangle"):
+    """Road height of a cleat whose leading edge (met first) is at road coordinate 0, extending to ``base``.
+
+    Shapes: ``"triangle"`` (paper), ``"rectangle"``, ``"half-sine"``.
+    """
+    if not (np.isfinite(height) and height > 0):
+        raise ValueError(f"cleat height = {height} m: valid range is (0, 0.1] m")
+    if height > 0.1:
+        raise ValueError(f"cleat height = {height} m: valid range is (0, 0.1] m")
+    if not (np.isfinite(base) and 0 < base <= 0.5):
+        raise ValueError(f"cleat base = {base} m: valid range is (0, 0.5] m")
+    if shape not in ("triangle", "rectangle", "half-sine"):
+        raise ValueError(f"cleat shape = {shape!r}: valid values are 'triangle', 'rectangle', 'half-sine'")
+
+    def profile(s: np.ndarray) -> np.ndarray:
+        xi = np.asarray(s, dtype=float) / base  # 0 at the leading edge, 1 at the trailing edge
+        inside = (xi >= 0) & (xi <= 1)
+        if shape == "triangle":
+            z = height * (1 - np.abs(2 * xi - 1))
+        elif shape == "rectangle":
+            z = np.full_like(xi, height)
+        else:
+            z = height * np.sin(np.pi * np.clip(xi, 0, 1))
+        return np.where(inside, z, 0.0)
+
+    return profile
+
+
+def cleat_input(
+    static: StaticState,
+    speed: float,
+    height: float | None = None,
+    base: float | None = None,
+    shape: str | None = None,
+    distance: tuple[float, float] | None = None,
+    sample_rate: float | None = None,
+) -> RoadInput:
+    """A cleat on the drum flowing through the footprint (paper Fig. 8-9).
+
+    Parameters default to the paper's test (``data/conditions/cleat_test.toml``): triangular
+    cleat 15 mm base x 15 mm high. ``distance`` defaults to from 0.1 m before the cleat
+    reaches the axle to 0.5 m after (the decay). The drum's curvature is in the static
+    footprint; the cleat height is added normal to the drum surface (vertical to within
+    0.1 % over the footprint of a 1.25 m drum).
+    """
+    from .conditions import load_conditions
+
+    cleat = load_conditions("cleat_test")["cleat"]
+    height = cleat["height"] if height is None else height
+    base = cleat["base"] if base is None else base
+    shape = cleat["shape"] if shape is None else shape
+    distance = (-0.1, 0.5) if distance is None else distance
+    return profile_input(
+        static,
+        cleat_profile(height, base, shape),
+        speed,
+        distance,
+        sample_rate,
+        description=f"{shape} cleat {base * 1e3:.0f} mm x {height * 1e3:.0f} mm at {speed * 3.6:.1f} km/h",
+    )
