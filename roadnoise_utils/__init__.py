@@ -16,7 +16,7 @@ Public entry points (DESIGN section 6)::
 Cached stage results for the notebooks: :mod:`roadnoise_utils.pipeline`.
 """
 
-from . import analysis, cleat, collection, conditions, paper, peers, pipeline
+from . import analysis, cleat, collection, conditions, corner, movinghub, paper, peers, pipeline, textures, vehicle
 from .calibration import calibration_table
 from .fet import FETModel, build_fet
 from .fitting import FitSet, RationalFit, fit_tasselli, vector_fit
@@ -39,6 +39,8 @@ __all__ = [
     "cleat",
     "collection",
     "conditions",
+    "corner",
+    "movinghub",
     "paper",
     "peers",
     "FETModel",
@@ -64,6 +66,8 @@ __all__ = [
     "loaded_modes",
     "modal_reduction",
     "pipeline",
+    "textures",
+    "vehicle",
     "realize",
     "ring_check",
     "ring_frequencies",

@@ -536,3 +536,207 @@ def plot_row_influence(rows: pd.DataFrame, static: StaticState, base: float, ax:
     ax.invert_xaxis()
     ax.legend()
     return ax
+
+
+def plot_moving_hub_scheme() -> plt.Figure:
+    """Fig. 7 analogue: the force on the moving hub as fixed-hub road force plus hub-motion force."""
+    fig, axes = plt.subplots(1, 3, figsize=(11, 3.2))
+    titles = [
+        "moving hub, road input\nF_M",
+        "fixed hub, road input\nF_F = Σ_i G_i u_i",
+        "moving hub, no road input\nF_H = G_H u_H",
+    ]
+    for ax, title, hub_moves, road_moves in zip(axes, titles, [True, False, True], [True, True, False]):
+        ax.set_xlim(-1.3, 1.3)
+        ax.set_ylim(-1.45, 1.3)
+        ax.set_aspect("equal")
+        ax.axis("off")
+        ax.add_patch(Circle((0, 0.1), 1.0, fill=False, lw=2))
+        ax.add_patch(Circle((0, 0.1), 0.35, fc="0.8", ec="k"))
+        ax.plot([-1.2, 1.2], [-0.92, -0.92], color="tab:brown", lw=3)
+        if hub_moves:
+            ax.annotate("", (0, 0.75), (0, 0.1), arrowprops={"arrowstyle": "<->", "color": "tab:red", "lw": 1.5})
+            ax.text(0.12, 0.55, "u_H", color="tab:red")
+        else:
+            ax.plot([-0.2, 0.2], [0.1, 0.1], "k", lw=4)
+            ax.text(0.1, 0.25, "fixed", fontsize=8)
+        if road_moves:
+            for x in (-0.4, 0.0, 0.4):
+                ax.annotate("", (x, -0.65), (x, -1.25), arrowprops={"arrowstyle": "->", "color": "tab:blue"})
+            ax.text(0.5, -1.35, "u_i", color="tab:blue")
+        ax.set_title(title, fontsize=9)
+    fig.text(0.355, 0.5, "=", fontsize=22, ha="center")
+    fig.text(0.68, 0.5, "+", fontsize=22, ha="center")
+    fig.suptitle("Fig. 7 analogue: computation of the force on the moving hub, F_M = F_F + F_H (Eq. 5)")
+    return fig
+
+
+def plot_frf_pair(
+    freqs: np.ndarray, curves: dict[str, np.ndarray], ylabel: str, ax: plt.Axes | None = None, log: bool = True
+) -> plt.Axes:
+    """Moduli of a few complex FRFs on one axis (first curve bold: the reference)."""
+    if ax is None:
+        _, ax = plt.subplots(figsize=(8, 4))
+    for k, (label, values) in enumerate(curves.items()):
+        style = {"color": "k", "lw": 2.2} if k == 0 else {"ls": "--", "lw": 1.3}
+        (ax.semilogy if log else ax.plot)(freqs, np.abs(values), label=label, **style)
+    ax.set_xlabel("Frequency (Hz)")
+    ax.set_ylabel(ylabel)
+    ax.legend()
+    return ax
+
+
+def plot_road_spectra(
+    spectra: dict,
+    n: np.ndarray,
+    iso_classes: dict[str, float],
+    ax: plt.Axes | None = None,
+    measured: dict | None = None,
+) -> plt.Axes:
+    """Road displacement PSDs (m^3) vs wavenumber with the ISO 8608 class boundaries."""
+    if ax is None:
+        _, ax = plt.subplots(figsize=(8, 4.5))
+    for name, g0 in iso_classes.items():
+        ax.loglog(n, g0 * (n / 0.1) ** -2.0, color="0.8", lw=0.8)
+        ax.text(n[0] * 1.05, g0 * (n[0] / 0.1) ** -2.0, name, fontsize=7, color="0.5", va="bottom")
+    for (name, spectrum), colour in zip(spectra.items(), ["tab:red", "tab:blue", "tab:green"]):
+        ax.loglog(n, spectrum.psd(n), lw=2, color=colour, label=f"{name} (target)")
+        if measured and name in measured:
+            nm, gm = measured[name]
+            ax.loglog(nm[1:], gm[1:], lw=0.8, color=colour, alpha=0.7, label=f"{name} (generated, Welch)")
+    ax.axvline(1 / 0.05, color="k", ls=":", lw=0.8)
+    ax.text(1 / 0.05, ax.get_ylim()[1], " 5 cm", va="top", fontsize=8)
+    ax.set_xlabel("wavenumber n (cycles/m)")
+    ax.set_ylabel("displacement PSD G(n) (m^3)")
+    ax.legend(fontsize=7)
+    return ax
+
+
+def plot_transmissibility(
+    freqs: np.ndarray, transmissibility: np.ndarray, criteria: dict, ax: plt.Axes | None = None
+) -> plt.Axes:
+    """Fig. 10 analogue: |a_mount / a_hub| with the paper's three bands shaded."""
+    if ax is None:
+        _, ax = plt.subplots(figsize=(8, 4))
+    ax.plot(freqs, np.abs(transmissibility), "k", lw=1.8, label="quarter car (ours)")
+    bands = [
+        ("low_band", "tab:blue", "≈90 % filtered"),
+        ("mid_band", "tab:green", "almost unaltered"),
+        ("high_band", "tab:orange", "≤ 40 % filtered"),
+    ]
+    for key, colour, text in bands:
+        lo, hi = criteria[key]
+        ax.axvspan(lo, hi, color=colour, alpha=0.12)
+        ax.text(0.5 * (lo + hi), 1.9, text, ha="center", fontsize=8, color=colour)
+    ax.axhline(1.0, color="0.5", lw=0.7, ls=":")
+    ax.set_ylim(0, 2.1)
+    ax.set_xlim(0, 300)
+    ax.set_xlabel("Frequency [Hz]")
+    ax.set_ylabel("|a_upper mount / a_hub|")
+    ax.legend(loc="upper left")
+    return ax
+
+
+def plot_spectra(
+    freqs: np.ndarray,
+    curves: dict[str, np.ndarray],
+    ylabel: str,
+    f_range: tuple[float, float],
+    ax: plt.Axes | None = None,
+    log: bool = False,
+    predicted: dict[str, tuple] | None = None,
+) -> plt.Axes:
+    """Amplitude spectral densities (sqrt of PSD) of a few signals, optionally with predictions."""
+    if ax is None:
+        _, ax = plt.subplots(figsize=(8, 4))
+    for (label, psd), colour in zip(curves.items(), ["tab:red", "tab:blue", "tab:green"]):
+        keep = (freqs >= f_range[0]) & (freqs <= f_range[1])
+        (ax.semilogy if log else ax.plot)(freqs[keep], np.sqrt(psd[keep]), color=colour, lw=1.2, label=label)
+        if predicted and label in predicted:
+            fp, pp = predicted[label]
+            k = (fp >= f_range[0]) & (fp <= f_range[1])
+            (ax.semilogy if log else ax.plot)(fp[k], np.sqrt(pp[k]), "k--", lw=0.8)
+    ax.set_xlim(*f_range)
+    ax.set_xlabel("Frequency (Hz)")
+    ax.set_ylabel(ylabel)
+    ax.legend()
+    return ax
+
+
+def plot_kernel_filter(
+    wavelengths: np.ndarray, gains: np.ndarray, labels: list[str], ax: plt.Axes | None = None
+) -> plt.Axes:
+    """|K_i(1/λ)|: how much of a sinusoidal road of wavelength λ reaches each tassello."""
+    if ax is None:
+        _, ax = plt.subplots(figsize=(8, 4))
+    for g, label in zip(gains, labels):
+        ax.semilogx(wavelengths * 100, np.abs(g), label=label)
+    ax.axvline(5.0, color="k", ls=":", lw=0.8)
+    ax.text(5.0, 1.02, " 5 cm", fontsize=8)
+    ax.set_xlabel("road wavelength λ (cm)")
+    ax.set_ylabel("|tassello input / road amplitude|")
+    ax.set_ylim(0, 1.1)
+    ax.legend(fontsize=7)
+    return ax
+
+
+def plot_tracks(profile, length: float, ax: plt.Axes | None = None) -> plt.Axes:
+    """The first ``length`` m of a 3D road: one track per belt strip, as an image."""
+    if ax is None:
+        _, ax = plt.subplots(figsize=(10, 2.6))
+    keep = profile.s <= length
+    im = ax.pcolormesh(profile.s[keep], profile.y * MM, profile.z[:, keep] * MM, shading="nearest", cmap="terrain")
+    plt.colorbar(im, ax=ax, label="height (mm)")
+    ax.set_xlabel("road coordinate s (m)")
+    ax.set_ylabel("track y (mm)")
+    ax.grid(False)
+    return ax
+
+
+def plot_quarter_car_scheme(vehicle) -> plt.Figure:
+    """Fig. 13 analogue: the corner's masses and elements, with the RM tire under the hub."""
+    names = ["body", "tower", "rod", "unsprung"]
+    names = [n for n in names if n in vehicle.masses] + [n for n in vehicle.masses if n not in names]
+    y = {name: 4.0 - 1.2 * k for k, name in enumerate(names)}
+    x = {name: (0.6 if name == "rod" else 0.0) for name in names}
+    fig, ax = plt.subplots(figsize=(6.5, 6))
+    for name in names:
+        ax.add_patch(Rectangle((x[name] - 0.45, y[name] - 0.25), 0.9, 0.5, fc="tab:blue", alpha=0.2, ec="tab:blue"))
+        ax.text(x[name], y[name], f"{name}\n{vehicle.masses[name]:g} kg", ha="center", va="center", fontsize=8)
+    ground_y = y[vehicle.hub] - 2.2
+    ax.add_patch(Rectangle((-0.6, y[vehicle.hub] - 1.55), 1.2, 0.7, fc="0.3", alpha=0.25, ec="k"))
+    ax.text(0, y[vehicle.hub] - 1.2, "RM tire: F_M = F_F + G_H u_H\n(Eq. 5-7)", ha="center", va="center", fontsize=8)
+    ax.plot([-1.2, 1.2], [ground_y, ground_y], color="tab:brown", lw=3)
+    ax.text(0, ground_y - 0.25, "road irregularities → tasselli", ha="center", fontsize=8, color="tab:brown")
+    ax.annotate("", (0, ground_y + 0.05), (0, y[vehicle.hub] - 1.55), arrowprops={"arrowstyle": "-", "ls": ":"})
+    for k, e in enumerate(vehicle.elements):
+        ya, yb = y.get(e.a, ground_y), y.get(e.b, ground_y)
+        xm = -0.65 - 0.42 * (len(vehicle.elements) - 1 - k)
+        ax.plot(
+            [xm, xm],
+            [min(ya, yb) + 0.25, max(ya, yb) - 0.25],
+            color="k",
+            lw=1.0,
+            ls={"spring": "-", "damper": "--", "maxwell": "-."}[e.kind],
+        )
+        value = (
+            f"{e.stiffness / 1e3:g} N/mm"
+            if e.kind == "spring"
+            else f"{e.damping:g} Ns/m"
+            if e.kind == "damper"
+            else f"{e.damping:g} Ns/m + {e.stiffness / 1e3:g} N/mm"
+        )
+        ax.text(
+            xm,
+            max(ya, yb) - 0.2,
+            f"{e.a[:5]}-{e.b[:5]}\n{e.kind}\n{value}",
+            fontsize=5.5,
+            ha="center",
+            va="bottom",
+            rotation=90,
+        )
+    ax.set_xlim(-0.9 - 0.42 * len(vehicle.elements), 1.6)
+    ax.set_ylim(ground_y - 0.5, 4.5)
+    ax.axis("off")
+    fig.suptitle("Fig. 13 analogue: the quarter car (front corner, MacPherson strut)")
+    return fig

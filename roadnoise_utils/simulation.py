@@ -148,6 +148,36 @@ class SimulationResult:
     road: RoadInput
 
 
+def _run(sections: ModalSections, u: np.ndarray, dt: float) -> np.ndarray:
+    """Output of the modal sections for inputs ``u`` (n_inputs, n_samples) at step ``dt``."""
+
+    def run(part: list[Section]) -> np.ndarray:
+        out = np.zeros(u.shape[1])
+        for section in part:
+            b, a, zi = _section_filter(section, dt)
+            v = u[section.source]
+            out += lfilter(b, a, v, zi=zi * v[0])[0]
+        return out
+
+    # lfilter releases the GIL: the sections run on two threads (the CI machine has 2 cores)
+    parts = [sections.sections[k::THREADS] for k in range(THREADS)]
+    with ThreadPoolExecutor(THREADS) as pool:
+        return sections.direct @ u + sum(pool.map(run, parts))
+
+
+def _check_inputs(u: np.ndarray, t: np.ndarray, n_inputs: int) -> float:
+    if u.ndim != 2 or u.shape[0] != n_inputs:
+        raise ValueError(f"input has {u.shape[0] if u.ndim == 2 else u.ndim} rows; the model has {n_inputs} inputs")
+    if u.shape[1] != t.size or t.size < 2:
+        raise ValueError("inputs need one column per time sample, at least two samples")
+    if not np.all(np.isfinite(u)):
+        raise ValueError("input contains NaN or inf")
+    dt = float(t[1] - t[0])
+    if not (dt > 0 and np.allclose(np.diff(t), dt, rtol=1e-9, atol=0)):
+        raise ValueError("time step must be uniform and positive")
+    return dt
+
+
 def simulate(system: control.StateSpace | ModalSections, road: RoadInput) -> SimulationResult:
     """Hub force of a (fixed-hub) state-space tire driven by tassello displacements.
 
@@ -166,24 +196,16 @@ def simulate(system: control.StateSpace | ModalSections, road: RoadInput) -> Sim
     """
     sections = system if isinstance(system, ModalSections) else modal_sections(system)
     u = np.asarray(road.u, dtype=float)
-    if u.shape[0] != sections.n_inputs:
-        raise ValueError(f"road has {u.shape[0]} input rows; the model has {sections.n_inputs} inputs")
-    if not np.all(np.isfinite(u)):
-        raise ValueError("road input contains NaN or inf")
-    dt = road.dt
-    if not np.allclose(np.diff(road.t), dt, rtol=1e-9, atol=0):
-        raise ValueError("road time step must be uniform")
+    dt = _check_inputs(u, np.asarray(road.t), sections.n_inputs)
+    return SimulationResult(t=road.t, distance=road.distance, force=_run(sections, u, dt), road=road)
 
-    def run(part: list[Section]) -> np.ndarray:
-        out = np.zeros(u.shape[1])
-        for section in part:
-            b, a, zi = _section_filter(section, dt)
-            v = u[section.source]
-            out += lfilter(b, a, v, zi=zi * v[0])[0]
-        return out
 
-    # lfilter releases the GIL: the sections run on two threads (the CI machine has 2 cores)
-    parts = [sections.sections[k::THREADS] for k in range(THREADS)]
-    with ThreadPoolExecutor(THREADS) as pool:
-        force = sections.direct @ u + sum(pool.map(run, parts))
-    return SimulationResult(t=road.t, distance=road.distance, force=force, road=road)
+def response(system: control.StateSpace, t: np.ndarray, u: np.ndarray) -> np.ndarray:
+    """All outputs (n_outputs, n_samples) of any stable LTI model for inputs ``u`` (FOH, zero state).
+
+    The same method as :func:`simulate`, one set of modal sections per output.
+    """
+    u = np.atleast_2d(np.asarray(u, dtype=float))
+    t = np.asarray(t, dtype=float)
+    dt = _check_inputs(u, t, system.ninputs)
+    return np.array([_run(modal_sections(system[k, :]), u, dt) for k in range(system.noutputs)])
