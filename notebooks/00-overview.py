@@ -39,11 +39,16 @@
 
 # %%
 import matplotlib.pyplot as plt
+from IPython.display import Markdown
 
 import roadnoise_utils as ru
 from roadnoise_utils import collection, plotting
 
 ru.set_style()
+
+# %% tags=["parameters"]
+# Parameters (papermill): the claims to evaluate (ids of data/paper/claims.toml; None = all)
+claim_ids = None
 
 # %%
 # Fig. 1 analogue: the RM pipeline and the notebook of each stage
@@ -53,11 +58,40 @@ plt.show()
 # %% [markdown]
 # ## Map of the collection
 #
-# Generated from `data/collection.toml`, the same source as the README's table.
+# Generated from `data/collection.toml`, the same source as the README's table; the links open
+# each stage's notebook.
 
 # %%
 # The notebooks, the paper section and figures each reproduces
-collection.notebook_table(link_prefix="")
+Markdown(collection.markdown_table(link_prefix=""))
+
+# %% [markdown]
+# ## The reproduction report
+#
+# Every claim of the paper that a number can check, our value and the verdict, computed live
+# (on a fresh checkout this runs every stage once, about a minute; later the stage cache
+# answers). The claims, the paper's values with their section or figure, and the tolerances
+# are in `data/paper/claims.toml`; a claim we do not reproduce carries the reason. The
+# reproduction command (`python -m roadnoise_utils.reproduce`) writes the same table to
+# `figures/reproduction-report.md` and `.csv`.
+
+# %%
+# The report: one row per claim
+claims = ru.claims.load_claims()
+if claim_ids is not None:
+    claims = [c for c in claims if c["id"] in claim_ids]
+report = ru.claims.report(claims=claims)
+report
+
+# %%
+# NBVAL_CHECK_OUTPUT
+# Verdicts; every claim passes or is a documented deviation
+print(ru.claims.verdicts(report))
+ru.claims.check(report)
+
+# %%
+# The documented deviations and why
+Markdown("\n".join(f"- **{cid}**: {row['known deviation']}" for cid, row in report.iterrows() if row["known deviation"]))
 
 # %% [markdown]
 # ## Public entry points

@@ -124,7 +124,8 @@ plt.show()
 # bending stiffness $EI$, tension $T$, mass $\rho A$ on a radial and tangential foundation
 # $k_r, k_t$ has the in-plane frequencies of an inextensible ring (DESIGN §2; Gong 1993):
 #
-# $$\omega_n^2 = \frac{n^2\left[\dfrac{EI(n^2-1)^2}{R^4} + \dfrac{T(n^2-1)}{R^2} + k_r\right] + k_t}{\rho A\,(n^2+1)},
+# $$\omega_n^2 = \frac{n^2\left[\dfrac{EI(n^2-1)^2}{R^4} + \dfrac{T(n^2-1)}{R^2} + k_r\right] +
+# k_t}{\rho A\,(n^2+1)},
 # \qquad \omega_0^2 = \frac{k_t}{\rho A}.$$
 #
 # Both the geometric stiffness of $T$ and the load stiffness of the follower pressure are
@@ -294,23 +295,22 @@ print(calibration.drop(columns="source").to_string(float_format=lambda v: f"{v:.
 assert calibration["ok"].all()
 
 # %% [markdown]
-# ## 8. Paper vs ours
+# ## Paper vs ours
 #
-# The paper reports few numbers about its FE model; those it does, we compare (values from
-# `data/paper/belluzzo2002.toml`).
+# The paper reports few numbers about its FE model; those it does, we compare. The claims, the
+# paper's values and our tolerances are in `data/paper/claims.toml`;
+# `ru.claims` computes our side on the paper's tire (whatever this notebook's parameters).
+
+# %%
+# The paper's claims shown by this notebook, our values and the verdicts
+claims = ru.claims.report(notebook="01-fe-tire-model.ipynb")
+claims.drop(columns="notebook")
 
 # %%
 # NBVAL_CHECK_OUTPUT
-# Paper vs ours
-comparison = ru.paper.comparison_table(
-    [
-        ("FE degrees of freedom", "fe_dof", fet.n_dof, 0.10, "'about 8000'"),
-        ("tasselli in the footprint", "n_tasselli", flat.tasselli.n, 0.10, "flat road; drum gives fewer"),
-        ("first vertical resonance", "first_vertical_resonance", peaks[0], 0.05, "peak of |H_tot|"),
-    ]
-)
-print(comparison.to_string(float_format=lambda v: f"{v:.1f}"))
-assert comparison["ok"].all()
+# Verdicts; every claim passes or is a documented deviation
+print(ru.claims.verdicts(claims))
+ru.claims.check(claims)
 
 # %% [markdown]
 # ## Explore

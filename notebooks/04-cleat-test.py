@@ -109,7 +109,7 @@ print(f"{quasi_static_kmh} km/h: {quasi_road.sample_rate:.0f} Hz, {quasi_road.u.
 # as a second-order IIR filter (`scipy.signal.lfilter`). No loop over time steps in Python.
 
 # %%
-# Quasi-static (base curve) and 30 km/h (dynamic curve) runs
+# Fig. 9 analogue: quasi-static (base curve) and 30 km/h (dynamic curve) runs
 quasi = cleat.analyse_run(ru.simulate(sections, quasi_road), drum, base, dynamic=False)
 dynamic = cleat.analyse_run(ru.simulate(sections, dynamic_road), drum, base, dynamic=True)
 ax = plotting.plot_cleat_runs({f"base curve ({quasi_static_kmh} km/h)": quasi, f"dynamic curve ({speed_kmh:.0f} km/h)": dynamic},
@@ -140,15 +140,21 @@ print(dynamic.decay.head(4).to_string(float_format=lambda v: f"{v:.3f}"))
 
 # %% [markdown]
 # ## 4. Paper vs ours
+#
+# The paper's cleat-test numbers. The claims, the paper's values (with their source) and our
+# tolerances are in `data/paper/claims.toml`; `ru.claims` computes our side on the paper's tire
+# (whatever this notebook's parameters).
+
+# %%
+# The paper's claims shown by this notebook, our values and the verdicts
+claims = ru.claims.report(notebook="04-cleat-test.ipynb")
+claims.drop(columns="notebook")
 
 # %%
 # NBVAL_CHECK_OUTPUT
-# Paper vs ours for the cleat test
-reported = {k: ru.paper.reported(k) for k in (
-    "cleat_quasi_static_simulated", "cleat_quasi_static_measured", "cleat_ratio_measured",
-    "cleat_dynamic_measured", "cleat_decay_frequency")}
-table = cleat.comparison_table(quasi, dynamic, reported)
-print(table.to_string(float_format=lambda v: f"{v:.2f}"))
+# Verdicts; every claim passes or is a documented deviation
+print(ru.claims.verdicts(claims))
+ru.claims.check(claims)
 
 # %% [markdown]
 # **What we reproduce:** the shape — two peaks while crossing, then a decay whose leading

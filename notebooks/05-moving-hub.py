@@ -154,19 +154,21 @@ print("free hub, peaks of |hub acceleration|:", " ".join(f"{p:6.1f}" for p in fr
 
 # %% [markdown]
 # ## 4. Paper vs ours
+#
+# The moving-hub claims. The claims, the paper's values and our tolerances are in
+# `data/paper/claims.toml`;
+# `ru.claims` computes our side on the paper's tire (whatever this notebook's parameters).
+
+# %%
+# The paper's claims shown by this notebook, our values and the verdicts
+claims = ru.claims.report(notebook="05-moving-hub.ipynb")
+claims.drop(columns="notebook")
 
 # %%
 # NBVAL_CHECK_OUTPUT
-# Paper vs ours
-claims = ru.paper.claims_table(
-    [
-        ("Eq. 5: F_M = F_F + F_H (linear superposition)", "used",
-         f"RM vs FE free hub: {errors['hub force F_M']:.1%}", errors["hub force F_M"] < 0.02),
-        ("Eq. 6: G_H with 8 poles / 8 zeros", "8", f"{hub.n_poles} poles for < 1 %", hub.n_poles <= 8),
-        ("Eq. 7: one model, inputs [u_F; u_H]", "yes", f"{tire_M.ninputs} inputs, {tire_M.nstates} states", True),
-    ]
-)
-print(claims.to_string())
+# Verdicts; every claim passes or is a documented deviation
+print(ru.claims.verdicts(claims))
+ru.claims.check(claims)
 
 # %% [markdown]
 # $G_H$ needs 9 poles instead of 8 for a 1 % fit of our tire (with 8 the error is ~2 %);

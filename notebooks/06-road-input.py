@@ -223,6 +223,24 @@ except ValueError as error:
     print(error)
 
 # %% [markdown]
+# ## Paper vs ours
+#
+# The resolution claim of the abstract. The claims, the paper's values and our tolerances are in
+# `data/paper/claims.toml`;
+# `ru.claims` computes our side on the paper's tire (whatever this notebook's parameters).
+
+# %%
+# The paper's claims shown by this notebook, our values and the verdicts
+claims = ru.claims.report(notebook="06-road-input.ipynb")
+claims.drop(columns="notebook")
+
+# %%
+# NBVAL_CHECK_OUTPUT
+# Verdicts; every claim passes or is a documented deviation
+print(ru.claims.verdicts(claims))
+ru.claims.check(claims)
+
+# %% [markdown]
 # ## Explore: texture and seed
 #
 # The callback generates the profile and its Welch PSD with the package functions.

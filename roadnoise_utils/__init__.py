@@ -16,7 +16,7 @@ Public entry points (DESIGN section 6)::
 Cached stage results for the notebooks: :mod:`roadnoise_utils.pipeline`.
 """
 
-from . import analysis, cleat, collection, conditions, corner, movinghub, paper, peers, pipeline, textures, vehicle
+from . import analysis, claims, cleat, conditions, corner, movinghub, peers, pipeline, textures, vehicle
 from .calibration import calibration_table
 from .fet import FETModel, build_fet
 from .fitting import FitSet, RationalFit, fit_tasselli, vector_fit
@@ -36,12 +36,11 @@ __version__ = "0.1.0"
 
 __all__ = [
     "analysis",
+    "claims",
     "cleat",
-    "collection",
     "conditions",
     "corner",
     "movinghub",
-    "paper",
     "peers",
     "FETModel",
     "FRFResult",

@@ -18,10 +18,10 @@ from .tire_spec import TireSpec
 
 
 def calibration_targets(tire: str) -> dict:
-    """Targets of a tire (file stem in ``data/calibration``)."""
+    """Targets of a tire (file stem in ``data/calibration``); empty when the tire has none."""
     path = data_dir() / "calibration" / f"{tire}.toml"
     if not path.exists():
-        raise FileNotFoundError(f"no calibration targets {path}")
+        return {}
     with open(path, "rb") as fh:
         return tomllib.load(fh)
 
@@ -43,21 +43,35 @@ def calibration_values(tire: str | TireSpec, road: str = "flat") -> dict[str, fl
 
 
 def calibration_table(tire: str | TireSpec = "165_65R14", road: str = "flat") -> pd.DataFrame:
-    """Table "quantity / target / obtained / unit / ok / source" of the tire's calibration."""
+    """Table "quantity / target / obtained / unit / ok / source" of the tire's calibration.
+
+    A tire without ``data/calibration/<tire>.toml`` gets the obtained values only (target
+    ``-``, ok ``True``): copy and edit a targets file to check your own tire.
+    """
     spec = pipeline.tire_spec(tire)
     targets = calibration_targets(Path(spec.source.split(" ")[0]).stem)
     values = calibration_values(spec, road)
     rows = []
-    for name, t in targets.items():
-        value = values[name]
+    for name, value in values.items():
+        t = targets.get(name)
         rows.append(
             {
                 "quantity": name.replace("_", " "),
-                "target": f"{t['low']:g} - {t['high']:g}",
+                "target": f"{t['low']:g} - {t['high']:g}" if t else "-",
                 "obtained": value,
-                "unit": t["unit"],
-                "ok": bool(t["low"] <= value <= t["high"]),
-                "source": t["source"],
+                "unit": t["unit"] if t else _UNITS[name],
+                "ok": bool(t["low"] <= value <= t["high"]) if t else True,
+                "source": t["source"] if t else "no targets for this tire",
             }
         )
     return pd.DataFrame(rows).set_index("quantity")
+
+
+_UNITS = {
+    "vertical_stiffness": "N/mm",
+    "first_vertical_resonance": "Hz",
+    "footprint_length": "mm",
+    "footprint_width": "mm",
+    "n_tasselli": "-",
+    "max_tassello_size": "mm",
+}

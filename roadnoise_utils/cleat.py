@@ -5,7 +5,8 @@ R = 1.25 m, triangular cleat 15 mm base x 15 mm high, a quasi-static run ("base 
 one at 30 km/h ("dynamic curve"). Reported: two force peaks while the cleat crosses the
 footprint; measured dynamic peak about 2.2 times the quasi-static one; simulated quasi-static
 peak 1200 N against 850 N measured; the simulated dynamic peak "very close to the measured
-one"; after the cleat has left, a decay dominated by the 80 Hz first vertical mode.
+one"; after the cleat has left, a decay dominated by the 80 Hz first vertical mode
+(``data/paper/claims.toml`` keeps these numbers with their source).
 
 This module runs the RM chain (fitted state-space tire, :mod:`.simulate`) and, as a second
 method, the same cleat response straight from the viscoelastic FE model in the frequency
@@ -115,41 +116,6 @@ def fe_cleat_response(
     spectrum = np.zeros(freqs.size, complex)
     spectrum[keep] = np.sum(frf.H * np.fft.rfft(road.u, n, axis=1)[:, keep], axis=0) * window[keep]
     return np.fft.irfft(spectrum, n)[: road.u.shape[1]]
-
-
-def comparison_table(quasi_static: CleatRun, dynamic: CleatRun, reported: dict[str, float]) -> pd.DataFrame:
-    """Paper / ours for the cleat test; ``reported`` holds the paper's values (N, -, Hz)."""
-    ratio = dynamic.peak_force / quasi_static.peak_force
-    decay = float(dynamic.decay["frequency (Hz)"].iloc[0]) if dynamic.decay is not None else float("nan")
-    rows = [
-        (
-            "quasi-static peak (N)",
-            f"{reported['cleat_quasi_static_simulated']:.0f} simulated, "
-            f"{reported['cleat_quasi_static_measured']:.0f} measured",
-            quasi_static.peak_force,
-            quasi_static.peak_force / reported["cleat_quasi_static_measured"],
-        ),
-        (
-            "dynamic peak at 30 km/h (N)",
-            f"≈ {reported['cleat_dynamic_measured']:.0f} measured, simulated 'very close'",
-            dynamic.peak_force,
-            dynamic.peak_force / reported["cleat_dynamic_measured"],
-        ),
-        (
-            "dynamic / quasi-static",
-            f"{reported['cleat_ratio_measured']:.1f} measured",
-            ratio,
-            ratio / reported["cleat_ratio_measured"],
-        ),
-        ("force peaks while crossing", "2", float(len(quasi_static.peaks)), len(quasi_static.peaks) / 2),
-        (
-            "decay frequency (Hz)",
-            f"{reported['cleat_decay_frequency']:.0f}",
-            decay,
-            decay / reported["cleat_decay_frequency"],
-        ),
-    ]
-    return pd.DataFrame(rows, columns=["quantity", "paper", "ours", "ours / paper"]).set_index("quantity")
 
 
 def run_cleat(

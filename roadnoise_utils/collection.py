@@ -1,16 +1,19 @@
 """The map of the collection (``data/collection.toml``): notebook table for the README and notebook 00.
 
 ``python -m roadnoise_utils.collection`` prints the Markdown table that the README carries
-between its ``<!-- notebook-table -->`` markers (a test keeps the two identical).
+between its ``<!-- notebook-table -->`` markers, ``--gallery`` the figure gallery between its
+``<!-- gallery -->`` markers (tests keep them identical).
 """
 
 from __future__ import annotations
 
+import csv
 import tomllib
+from pathlib import Path
 
 import pandas as pd
 
-from .paths import data_dir
+from .paths import data_dir, figure_dir
 
 
 def notebooks() -> list[dict[str, str]]:
@@ -42,5 +45,31 @@ def markdown_table(link_prefix: str = "notebooks/") -> str:
     return "\n".join(lines)
 
 
+def gallery_markdown(index_csv: Path | None = None, prefix: str = "figures/", columns: int = 3) -> str:
+    """A Markdown/HTML table of our figures that mirror the paper's, one per paper figure, in order.
+
+    Built from the ``index.csv`` the reproduction writes; the README carries it between its
+    ``<!-- gallery -->`` markers (a test keeps the two identical).
+    """
+    index_csv = index_csv or figure_dir() / "index.csv"
+    with open(index_csv, newline="") as fh:
+        rows = [r for r in csv.DictReader(fh) if r["paper_figure"]]
+    first: dict[int, dict[str, str]] = {}
+    for r in rows:
+        first.setdefault(int(r["paper_figure"].split()[-1]), r)
+    cells = [
+        f'<img src="{prefix}{r["file"]}" width="280"><br><b>{r["paper_figure"]}</b> — '
+        f"{r['caption'].split(':', 1)[-1].strip()} ({r['notebook'].split('-')[0]})"
+        for _, r in sorted(first.items())
+    ]
+    lines = ["<table>"]
+    for k in range(0, len(cells), columns):
+        lines.append("<tr>" + "".join(f"<td>{c}</td>" for c in cells[k : k + columns]) + "</tr>")
+    lines.append("</table>")
+    return "\n".join(lines)
+
+
 if __name__ == "__main__":
-    print(markdown_table())
+    import sys
+
+    print(gallery_markdown() if "--gallery" in sys.argv else markdown_table())

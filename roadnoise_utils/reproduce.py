@@ -1,11 +1,18 @@
-"""Reproduce everything: execute every notebook in order and write their figures.
+"""Reproduce everything: execute every notebook in order, write the figures and the report.
 
-``python -m roadnoise_utils.reproduce`` runs each ready notebook of ``data/collection.toml``
-in a fresh kernel (in place, so the stored outputs are the ones you just computed) and writes
-every figure to ``figures/`` (``ROADNOISE_FIGURE_DIR``) as PNG, named after the notebook, the
-figure's order and the paper figure it corresponds to (read from the plot cell's heading
-comment, e.g. ``# Fig. 2 analogue: ...``). It lists the figures in ``figures/index.csv``.
-A notebook that fails stops the run with a non-zero exit status.
+``python -m roadnoise_utils.reproduce`` (the README's first command):
+
+1. runs each notebook of ``data/collection.toml`` in a fresh kernel, in order, in place (so
+   the stored outputs are the ones just computed); a failing notebook stops the run;
+2. writes every figure to ``figures/`` (``ROADNOISE_FIGURE_DIR`` or ``--figures``) as PNG,
+   named after the notebook, the paper figure it corresponds to (read from the plot cell's
+   heading comment, e.g. ``# Fig. 2 analogue: ...``) and its caption, listed in
+   ``figures/index.csv``;
+3. evaluates every claim of ``data/paper/claims.toml`` (:mod:`.claims`) and writes
+   ``reproduction-report.csv`` and ``.md`` next to the figures.
+
+The exit status is non-zero when a notebook fails or a claim fails that is not a documented
+known deviation.
 """
 
 from __future__ import annotations
@@ -22,6 +29,7 @@ import nbformat
 from nbclient import NotebookClient
 from tqdm.auto import tqdm
 
+from . import claims
 from .collection import notebooks
 from .paths import REPO_ROOT, figure_dir
 
@@ -33,11 +41,14 @@ def _slug(text: str) -> str:
     return re.sub(r"[^a-z0-9]+", "-", text.lower()).strip("-")[:48]
 
 
-def extract_figures(nb: nbformat.NotebookNode, stem: str, out_dir: Path) -> list[dict[str, str]]:
-    """Write the PNG outputs of an executed notebook; return one index row per figure."""
-    rows = []
-    count = 0
-    for cell in nb.cells:
+def figure_names(nb: nbformat.NotebookNode, stem: str) -> list[tuple[str, str, str, int, int]]:
+    """``(file, paper figure, caption, cell, output)`` for every PNG output of a notebook.
+
+    Names are stable: ``<notebook>-[figNN-]<caption slug>.png``, numbered only if a caption repeats.
+    """
+    out = []
+    seen: dict[str, int] = {}
+    for c, cell in enumerate(nb.cells):
         if cell.cell_type != "code":
             continue
         heading = next(
@@ -48,23 +59,31 @@ def extract_figures(nb: nbformat.NotebookNode, stem: str, out_dir: Path) -> list
             ),
             "figure",
         )
-        for output in cell.get("outputs", []):
-            data = output.get("data", {})
-            if "image/png" not in data:
+        for o, output in enumerate(cell.get("outputs", [])):
+            if "image/png" not in output.get("data", {}):
                 continue
-            count += 1
             match = _FIG.search(heading)
             paper = f"Fig. {match.group(1)}" if match else ""
-            tag = f"-fig{int(match.group(1)):02d}" if match else ""
-            caption = _ANALOGUE.sub("", heading)
-            name = f"{stem}-{count:02d}{tag}-{_slug(caption)}.png"
-            (out_dir / name).write_bytes(base64.b64decode(data["image/png"]))
-            rows.append({"file": name, "notebook": f"{stem}.ipynb", "paper_figure": paper, "caption": heading})
+            tag = f"fig{int(match.group(1)):02d}-" if match else ""
+            base = f"{stem}-{tag}{_slug(_ANALOGUE.sub('', heading))}"
+            seen[base] = seen.get(base, 0) + 1
+            name = base + ("" if seen[base] == 1 else f"-{seen[base]}") + ".png"
+            out.append((name, paper, heading, c, o))
+    return out
+
+
+def extract_figures(nb: nbformat.NotebookNode, stem: str, out_dir: Path) -> list[dict[str, str]]:
+    """Write the PNG outputs of an executed notebook; return one index row per figure."""
+    rows = []
+    for name, paper, caption, c, o in figure_names(nb, stem):
+        data = nb.cells[c]["outputs"][o]["data"]["image/png"]
+        (out_dir / name).write_bytes(base64.b64decode(data))
+        rows.append({"file": name, "notebook": f"{stem}.ipynb", "paper_figure": paper, "caption": caption})
     return rows
 
 
-def run(notebook_dir: Path, out_dir: Path, timeout: int = 1200) -> list[dict[str, str]]:
-    """Execute the ready notebooks in order; write figures and their index."""
+def run_notebooks(notebook_dir: Path, out_dir: Path, timeout: int = 1800) -> list[dict[str, str]]:
+    """Execute the ready notebooks in order; write their figures and the figure index."""
     out_dir.mkdir(parents=True, exist_ok=True)
     for old in out_dir.glob("*.png"):
         old.unlink()
@@ -88,13 +107,29 @@ def run(notebook_dir: Path, out_dir: Path, timeout: int = 1200) -> list[dict[str
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description="Execute every notebook in order and write the figures.")
+    parser = argparse.ArgumentParser(description="Execute every notebook in order, write the figures and the report.")
     parser.add_argument("--notebooks", type=Path, default=REPO_ROOT / "notebooks")
     parser.add_argument("--figures", type=Path, default=None, help="output folder (default figures/)")
+    parser.add_argument("--report-only", action="store_true", help="skip the notebooks, only evaluate the claims")
     args = parser.parse_args(argv)
-    figures = run(args.notebooks, args.figures or figure_dir())
-    print(f"{len(figures)} figures written to {args.figures or figure_dir()}")
-    return 0
+    out = args.figures or figure_dir()
+    if not args.report_only:
+        figures = run_notebooks(args.notebooks, out)
+        print(f"{len(figures)} figures written to {out}")
+    print("evaluating the paper's claims ...")
+    table = claims.report()
+    csv_path, md_path = claims.write_report(table, out)
+    failures = claims.unexpected_failures(table)
+    deviations = table[(table["verdict"] == "fail") & (table["known deviation"] != "")]
+    print(
+        f"report: {md_path} and {csv_path.name}: {int((table['verdict'] == 'pass').sum())} of {len(table)} claims "
+        f"reproduced, {len(deviations)} documented deviations, {len(failures)} unexpected failures"
+    )
+    for cid in failures.index:
+        print(
+            f"  FAILED: {cid}: {table.loc[cid, 'claim']} (paper {table.loc[cid, 'paper']}, ours {table.loc[cid, 'ours']})"
+        )
+    return claims.exit_status(table)
 
 
 if __name__ == "__main__":

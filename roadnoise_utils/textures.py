@@ -172,18 +172,31 @@ class RoadProfile:
     s: np.ndarray
     y: np.ndarray
     z: np.ndarray
-    spectrum: RoadSpectrum
-    seed: int
+    spectrum: RoadSpectrum | None
+    seed: int | None
+    periodic: bool = True
 
     @property
     def step(self) -> float:
         return float(self.s[1] - self.s[0])
 
     def height(self, s: np.ndarray, y: float | None = None) -> np.ndarray:
-        """Height (m) at road coordinates ``s`` on the track nearest to ``y`` (linear in s; periodic)."""
+        """Height (m) at road coordinates ``s`` on the track nearest to ``y`` (linear in s).
+
+        Generated roads are periodic; a measured road (:func:`load_road_file`) refuses
+        coordinates outside its length.
+        """
         track = 0 if y is None else int(np.argmin(np.abs(self.y - y)))
+        s = np.asarray(s, float)
+        if not self.periodic:
+            if s.min() < self.s[0] or s.max() > self.s[-1]:
+                raise ValueError(
+                    f"road coordinate {s.min():.3f}-{s.max():.3f} m is outside the road file's "
+                    f"{self.s[0]:.3f}-{self.s[-1]:.3f} m: shorten the travel distance"
+                )
+            return np.interp(s, self.s, self.z[track])
         period = self.s[-1] + self.step - self.s[0]
-        ss = np.mod(np.asarray(s, float) - self.s[0], period) + self.s[0]
+        ss = np.mod(s - self.s[0], period) + self.s[0]
         return np.interp(ss, self.s, self.z[track], period=period)
 
     def as_2d(self):
@@ -262,3 +275,39 @@ def profile_psd(profile: RoadProfile, track: int = 0, segments: int = 16) -> tup
     nperseg = profile.z.shape[1] // segments
     n, g = welch(profile.z[track], fs=1.0 / profile.step, nperseg=nperseg, window="hann", detrend=False)
     return n, g
+
+
+def load_road_file(path: str | Path) -> RoadProfile:
+    """A measured (or any) road from a CSV file: a 2D profile or a height field.
+
+    Format: a header line, then one row per road coordinate (m, increasing, uniform step).
+    ``s,z`` is a 2D profile; ``s,z@-0.05,z@0.00,z@0.05`` a height field, one column per
+    lateral position ``y`` (m) given after ``@``. Heights in metres. Lines starting with ``#``
+    are comments. Each belt strip uses the track nearest to its centre line.
+    """
+    path = Path(path)
+    with open(path) as fh:
+        lines = [line for line in fh if line.strip() and not line.startswith("#")]
+    header = lines[0].strip().split(",")
+    if header[0].strip() != "s" or len(header) < 2:
+        raise ValueError(f"{path.name}: the header must be 's,z' or 's,z@<y>,z@<y>,...', got {','.join(header)!r}")
+    try:
+        y = np.array([0.0 if h.strip() == "z" else float(h.strip().split("@")[1]) for h in header[1:]])
+    except (IndexError, ValueError) as exc:
+        raise ValueError(f"{path.name}: height columns must be named 'z' or 'z@<y in m>'") from exc
+    data = np.loadtxt(lines[1:], delimiter=",", ndmin=2)
+    if data.shape[1] != len(header):
+        raise ValueError(f"{path.name}: {data.shape[1]} columns but {len(header)} names in the header")
+    if not np.all(np.isfinite(data)):
+        raise ValueError(f"{path.name}: the road contains NaN or inf")
+    s, z = data[:, 0], data[:, 1:].T
+    step = np.diff(s)
+    if s.size < 3 or np.any(step <= 0) or not np.allclose(step, step[0], rtol=1e-6):
+        raise ValueError(f"{path.name}: s must increase with a uniform step")
+    if step[0] > MIN_WAVELENGTH / 4:
+        raise ValueError(
+            f"{path.name}: step {step[0] * 1e3:.1f} mm is too coarse: valid range is <= "
+            f"{MIN_WAVELENGTH / 4 * 1e3:.1f} mm (4 samples per 5 cm)"
+        )
+    order = np.argsort(y)
+    return RoadProfile(s=s, y=y[order], z=z[order], spectrum=None, seed=None, periodic=False)

@@ -1,0 +1,362 @@
+"""The paper's claims, our value for each, and the reproduction report.
+
+The claims, what the paper says, the tolerance and the notebook live in
+``data/paper/claims.toml``; this module computes *our* number for each claim with the same
+package functions the notebooks use (on the paper's tires, whatever a notebook's parameters)
+and judges it with the data's test. :func:`report` is the table notebook 00 and the
+reproduction command show; :func:`write_report` writes it as CSV and Markdown.
+"""
+
+from __future__ import annotations
+
+import functools
+import tomllib
+from collections.abc import Callable
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from . import pipeline
+from .analysis import band_errors, peak_comparison, resonance_peaks
+from .paths import data_dir
+
+PAPER_TIRE = "165_65R14"
+CAR = "midsize_195_65R15"
+
+
+def load_claims() -> list[dict]:
+    """The claims of ``data/paper/claims.toml``, in order."""
+    with open(data_dir() / "paper" / "claims.toml", "rb") as fh:
+        claims = tomllib.load(fh)["claim"]
+    tests = ("rel", "min", "max", "equal")
+    for c in claims:
+        if not any(t in c for t in tests):
+            raise ValueError(f"claim {c.get('id')!r} has no test; give one of {tests}")
+    return claims
+
+
+def judge(claim: dict, ours: float) -> bool:
+    """Whether ``ours`` passes the claim's test (relative tolerance, bounds or equality)."""
+    if not np.isfinite(ours):
+        return False
+    ok = True
+    if "rel" in claim:
+        ok &= abs(ours / float(claim["paper"]) - 1.0) <= claim["rel"]
+    if "min" in claim:
+        ok &= ours >= claim["min"]
+    if "max" in claim:
+        ok &= ours <= claim["max"]
+    if claim.get("equal"):
+        ok &= ours == float(claim["paper"])
+    return bool(ok)
+
+
+def tolerance_text(claim: dict) -> str:
+    """The claim's test in words."""
+    parts = []
+    if "rel" in claim:
+        parts.append(f"±{claim['rel']:.0%}")
+    if "min" in claim:
+        parts.append(f">= {claim['min']:g}")
+    if "max" in claim:
+        parts.append(f"<= {claim['max']:g}")
+    if claim.get("equal"):
+        parts.append("equal")
+    return ", ".join(parts)
+
+
+# ---------------------------------------------------------------- shared, cached inputs
+
+
+@functools.cache
+def _visco(road: str = "flat"):
+    return pipeline.visco_frf(PAPER_TIRE, road, progress=False)
+
+
+@functools.cache
+def _drum_runs():
+    from .cleat import run_cleat
+    from .simulation import modal_sections
+
+    static = pipeline.static_state(PAPER_TIRE, "drum")
+    sections = modal_sections(pipeline.fixed_hub_tire(PAPER_TIRE, "drum"))
+    quasi = run_cleat(sections, static, 0.1, distance=(-0.1, 0.15))
+    dynamic = run_cleat(sections, static, 30 / 3.6, distance=(-0.1, 0.6))
+    return quasi, dynamic
+
+
+@functools.cache
+def _corner_context():
+    from . import corner, vehicle
+    from .simulation import modal_sections
+
+    car = vehicle.load_vehicle(CAR)
+    fet = pipeline.fet_model(car.tire)
+    rim_side = float(fet.M[fet.mesh.hub_dofs[1], fet.mesh.hub_dofs[1]])
+    model = corner.corner_model(car, pipeline.hub_fit(car.tire), rim_side)
+    sections = modal_sections(pipeline.fixed_hub_tire(car.tire))
+    return car, pipeline.static_state(car.tire), pipeline.tassello_fits(car.tire), model, sections
+
+
+@functools.cache
+def _corner_spectra(texture: str, seed: int = 2002, speed: float = 120 / 3.6, duration: float = 10.0):
+    from . import corner, textures
+    from .road import profile_input
+
+    _, static, _, model, sections = _corner_context()
+    strips = np.unique(static.tasselli.node_y)
+    field = textures.generate_field(textures.load_texture(texture), duration * speed + 5.0, 0.004, strips, seed=seed)
+    road = profile_input(static, field.as_3d(), speed, (0.0, duration * speed), sample_rate=10000, oversample=1)
+    run = corner.run_corner(sections, model, road)
+    return {out: corner.psd(run.outputs[out], run.sample_rate) for out in ("a_hub", "a_mount")}
+
+
+def _low_share(spectrum: tuple[np.ndarray, np.ndarray], band: float = 250.0) -> float:
+    f, p = spectrum
+    return float(p[(f > 2) & (f < 50)].sum() / p[(f > 2) & (f <= band)].sum())
+
+
+def _transmissibility_stats() -> tuple[float, float, float]:
+    from . import vehicle
+
+    car = vehicle.load_vehicle(CAR)
+    f = np.linspace(1.0, 300.0, 600)
+    t = np.abs(vehicle.transmissibility(car, f))
+    return (
+        float(t[(f >= 20) & (f <= 120)].mean()),
+        float(t[(f >= 125) & (f <= 200)].mean()),
+        float(t[(f >= 200) & (f <= 250)].min()),
+    )
+
+
+# ---------------------------------------------------------------- one evaluator per claim
+
+
+def _fe_dof() -> float:
+    return float(pipeline.fet_model(PAPER_TIRE).n_dof)
+
+
+def _n_tasselli() -> float:
+    return float(pipeline.static_state(PAPER_TIRE).tasselli.n)
+
+
+def _first_vertical_resonance() -> float:
+    v = _visco()
+    return float(resonance_peaks(v.freqs, v.H_tot)[0][0])
+
+
+def _superposition() -> float:
+    v = _visco()
+    return float(np.max(np.abs(v.H_sum - v.H_tot) / np.abs(v.H_tot)))
+
+
+def _footprint_slip() -> float:
+    from .frf import frf_visco
+
+    v = _visco()
+    keep = v.freqs <= 300
+    sliding = frf_visco(
+        pipeline.fet_model(PAPER_TIRE), pipeline.static_state(PAPER_TIRE), v.freqs[keep], progress=False, stick=False
+    )
+    return float(band_errors(v.freqs[keep], v.H_tot[keep], sliding.H_tot)["complex rel. RMS"].max())
+
+
+def _freezing_frequency() -> float:
+    return pipeline.modal(PAPER_TIRE).reference_frequency
+
+
+def _frozen_underestimates() -> float:
+    reduced = pipeline.modal(PAPER_TIRE)
+    v = _visco()
+    peaks = peak_comparison(v.freqs, v.H_tot, reduced.frf.H_tot, f_max=260.0)
+    above = peaks["reference (Hz)"] > reduced.reference_frequency + 5.0
+    return float(peaks.loc[above, "shift (%)"].max())
+
+
+def _paper_modal_errors() -> np.ndarray:
+    v = _visco()
+    paper = pipeline.modal(PAPER_TIRE, frozen="storage", damping="identified")
+    return band_errors(v.freqs, v.H_tot, paper.frf.H_sum)["complex rel. RMS"].to_numpy()
+
+
+def _eight_poles() -> float:
+    from .fitting import fit_tasselli
+
+    v = _visco()
+    return float(fit_tasselli(v.freqs, v.H, n_poles=8).rms_errors.max())
+
+
+def _fig6_fit() -> float:
+    static = pipeline.static_state(PAPER_TIRE)
+    centre = int(np.argmin(np.hypot(static.tasselli.centre_x, static.tasselli.centre_y)))
+    return float(pipeline.tassello_fits(PAPER_TIRE)[centre].rms_error)
+
+
+def _moving_hub() -> float:
+    from . import movinghub
+
+    tire = "195_65R15"
+    fet = pipeline.fet_model(tire)
+    f = np.arange(2.0, 251.0, 4.0)
+    _, f_fe = movinghub.fe_moving_hub(fet, pipeline.static_state(tire), f, 32.0, 25e3, 3000.0)
+    rim_side = float(fet.M[fet.mesh.hub_dofs[1], fet.mesh.hub_dofs[1]])
+    _, f_rm = movinghub.rm_moving_hub(
+        pipeline.tassello_fits(tire), pipeline.hub_fit(tire), f, 32.0 + rim_side, 25e3, 3000.0
+    )
+    return float(np.linalg.norm(f_rm - f_fe) / np.linalg.norm(f_fe))
+
+
+def _resolution() -> float:
+    from .corner import tassellation_error
+
+    tire = "195_65R15"
+    v = pipeline.visco_frf(tire, progress=False)
+    k = int(np.argmin(np.abs(v.freqs - 100.0)))
+    return float(tassellation_error(pipeline.static_state(tire), v.H_points[:, k], [0.05])[0])
+
+
+def _fig14_modes() -> float:
+    from .corner import predicted_psd
+    from .textures import load_texture
+
+    _, static, fits, model, _ = _corner_context()
+    f = np.arange(40.0, 221.0, 1.0)
+    psd = predicted_psd(f, fits.responses(f), static, load_texture("rough"), 120 / 3.6, model)["a_hub"]
+    return float(resonance_peaks(f, np.sqrt(psd), min_ratio=0.0)[0].size)
+
+
+EVALUATORS: dict[str, Callable[[], float]] = {
+    "fe_dof": _fe_dof,
+    "n_tasselli": _n_tasselli,
+    "first_vertical_resonance": _first_vertical_resonance,
+    "superposition": _superposition,
+    "footprint_slip": _footprint_slip,
+    "freezing_frequency": _freezing_frequency,
+    "frozen_underestimates": _frozen_underestimates,
+    "fig5_match": lambda: float(_paper_modal_errors()[0]),
+    "fig5_degrades": lambda: float(_paper_modal_errors()[-1] / _paper_modal_errors()[0]),
+    "eight_poles": _eight_poles,
+    "fig6_fit": _fig6_fit,
+    "cleat_two_peaks": lambda: float(len(_drum_runs()[0].peaks)),
+    "cleat_quasi_static": lambda: _drum_runs()[0].peak_force,
+    "cleat_dynamic": lambda: _drum_runs()[1].peak_force,
+    "cleat_ratio": lambda: _drum_runs()[1].peak_force / _drum_runs()[0].peak_force,
+    "cleat_decay": lambda: float(_drum_runs()[1].decay["frequency (Hz)"].iloc[0]),
+    "moving_hub": _moving_hub,
+    "hub_poles": lambda: float(pipeline.hub_fit("195_65R15").n_poles),
+    "resolution_5cm": _resolution,
+    "fig10_low": lambda: _transmissibility_stats()[0],
+    "fig10_mid": lambda: _transmissibility_stats()[1],
+    "fig10_high": lambda: _transmissibility_stats()[2],
+    "fig11_low_frequency": lambda: _low_share(_corner_spectra("rough")["a_hub"]),
+    "fig12_equalized": lambda: _low_share(_corner_spectra("rough")["a_mount"]),
+    "fig11_textures": lambda: float(
+        np.sqrt(_corner_spectra("rough")["a_hub"][1].sum() / _corner_spectra("smooth")["a_hub"][1].sum())
+    ),
+    "fig14_modes": _fig14_modes,
+}
+
+
+def _format(value: float) -> str:
+    if value == 0 or 1e-3 <= abs(value) < 1e5:
+        return f"{value:.4g}"
+    return f"{value:.2e}"
+
+
+def report(
+    notebook: str | None = None,
+    claims: list[dict] | None = None,
+    evaluators: dict[str, Callable[[], float]] | None = None,
+) -> pd.DataFrame:
+    """One row per claim: claim, where, paper, ours, tolerance, verdict, notebook, known deviation.
+
+    ``notebook`` keeps the claims shown by one notebook; ``claims``/``evaluators`` replace the
+    data file and the evaluators (tests).
+    """
+    claims = load_claims() if claims is None else claims
+    evaluators = EVALUATORS if evaluators is None else evaluators
+    rows = []
+    for c in claims:
+        if notebook is not None and c["notebook"] != notebook:
+            continue
+        if c["id"] not in evaluators:
+            raise KeyError(f"no evaluator for claim {c['id']!r}")
+        ours = float(evaluators[c["id"]]())
+        passed = judge(c, ours)
+        rows.append(
+            {
+                "id": c["id"],
+                "claim": c["claim"],
+                "where": c["where"],
+                "paper": c["paper"] if isinstance(c["paper"], str) else _format(float(c["paper"])),
+                "ours": _format(ours),
+                "tolerance": tolerance_text(c),
+                "verdict": "pass" if passed else "fail",
+                "notebook": c["notebook"],
+                "known deviation": "" if passed else c.get("known_deviation", ""),
+            }
+        )
+    return pd.DataFrame(rows).set_index("id")
+
+
+def unexpected_failures(table: pd.DataFrame) -> pd.DataFrame:
+    """Failed claims that are not documented known deviations."""
+    return table[(table["verdict"] == "fail") & (table["known deviation"] == "")]
+
+
+def exit_status(table: pd.DataFrame) -> int:
+    """0 when every claim passes or fails only as a documented deviation, else 1."""
+    return int(len(unexpected_failures(table)) > 0)
+
+
+def to_markdown(table: pd.DataFrame) -> str:
+    """The report as a GitHub Markdown table (known deviations as footnotes)."""
+    columns = ["claim", "where", "paper", "ours", "tolerance", "verdict", "notebook"]
+    lines = ["| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
+    notes = []
+    for cid, row in table.iterrows():
+        verdict = row["verdict"]
+        if row["known deviation"]:
+            notes.append(f"- **{cid}**: {row['known deviation']}")
+            verdict = f"fail (known deviation: {cid})"
+        cells = [row["claim"], row["where"], row["paper"], row["ours"], row["tolerance"], verdict, row["notebook"]]
+        lines.append("| " + " | ".join(str(c).replace("|", "/") for c in cells) + " |")
+    passed = int((table["verdict"] == "pass").sum())
+    summary = (
+        f"{passed} of {len(table)} claims reproduced; {len(table) - passed} not ({len(notes)} documented deviations)."
+    )
+    return "\n".join([summary, "", *lines, "", *(["Known deviations:", "", *notes] if notes else [])]) + "\n"
+
+
+def write_report(table: pd.DataFrame, folder: Path) -> tuple[Path, Path]:
+    """Write ``reproduction-report.csv`` and ``.md`` into ``folder``; returns their paths."""
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    csv_path = folder / "reproduction-report.csv"
+    md_path = folder / "reproduction-report.md"
+    table.to_csv(csv_path)
+    md_path.write_text("# Reproduction report: Belluzzo et al. (2002)\n\n" + to_markdown(table))
+    return csv_path, md_path
+
+
+def verdicts(table: pd.DataFrame) -> str:
+    """One line per claim, ``id: pass`` or ``id: fail (documented deviation)``: stable printed output."""
+    lines = []
+    for cid, row in table.iterrows():
+        note = " (documented deviation)" if row["verdict"] == "fail" and row["known deviation"] else ""
+        lines.append(f"{cid}: {row['verdict']}{note}")
+    return "\n".join(lines)
+
+
+def check(table: pd.DataFrame) -> None:
+    """Raise ``AssertionError`` naming every claim that fails without a documented deviation."""
+    failures = unexpected_failures(table)
+    if len(failures):
+        raise AssertionError(
+            "claims not reproduced: "
+            + "; ".join(
+                f"{cid} (paper {row['paper']}, ours {row['ours']}, {row['tolerance']})"
+                for cid, row in failures.iterrows()
+            )
+        )
