@@ -36,7 +36,7 @@ def main() -> None:
     static = ru.pipeline.static_state(tire)
     fits = ru.pipeline.tassello_fits(tire)
     hub = ru.pipeline.hub_fit(tire)
-    rim_side = float(fet.M[fet.mesh.hub_dofs[1], fet.mesh.hub_dofs[1]])
+    rim_side = fet.hub_vertical_mass
     speed = args.speed_kmh / 3.6
     length = args.duration * speed
     spectrum = textures.load_texture("rough")

@@ -91,7 +91,9 @@ ru.claims.check(report)
 
 # %%
 # The documented deviations and why
-Markdown("\n".join(f"- **{cid}**: {row['known deviation']}" for cid, row in report.iterrows() if row["known deviation"]))
+Markdown(
+    "\n".join(f"- **{cid}**: {row['known deviation']}" for cid, row in report.iterrows() if row["known deviation"])
+)
 
 # %% [markdown]
 # ## Public entry points
@@ -112,5 +114,7 @@ Markdown("\n".join(f"- **{cid}**: {row['known deviation']}" for cid, row in repo
 # The tires available in data/tires and their size
 for name in ("165_65R14", "195_65R15"):
     spec = ru.load_tire(name)
-    print(f"{name}: {spec.name}, {spec.operating.inflation_pressure / 1e5:.1f} bar, "
-          f"{spec.operating.vertical_load:.0f} N, outer radius {spec.geometry.outer_radius * 1e3:.1f} mm")
+    print(
+        f"{name}: {spec.name}, {spec.operating.inflation_pressure / 1e5:.1f} bar, "
+        f"{spec.operating.vertical_load:.0f} N, outer radius {spec.geometry.outer_radius * 1e3:.1f} mm"
+    )

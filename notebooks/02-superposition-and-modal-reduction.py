@@ -146,8 +146,10 @@ assert np.nanmax(np.abs(ident.damping / ident.damping_half_power - 1)) < 0.2  # 
 # %%
 # NBVAL_CHECK_OUTPUT
 # The freezing frequency, chosen from H_tot (the paper: ~70 Hz)
-print(f"most relevant vertical mode: {reduced.reference_frequency:.1f} Hz "
-      f"(static share {ident.static_share.max() / 1e3:.1f} N/mm of {visco.H_tot[0].real / 1e3:.1f} N/mm)")
+print(
+    f"most relevant vertical mode: {reduced.reference_frequency:.1f} Hz "
+    f"(static share {ident.static_share.max() / 1e3:.1f} N/mm of {visco.H_tot[0].real / 1e3:.1f} N/mm)"
+)
 
 # %% [markdown]
 # ## 4. Modal reduction (steps 2-3)
@@ -261,8 +263,10 @@ k_ref = int(np.argmin(np.abs(visco.freqs - reduced.reference_frequency)))
 for name, frf in modal_frfs.items():
     err_ref = np.abs(frf.H[:, k_ref] - visco.H[:, k_ref]) / np.abs(visco.H[:, k_ref])
     err_0 = np.abs(frf.H[:, 0] - visco.H[:, 0]) / np.abs(visco.H[:, 0])
-    print(f"{name:45s} at {visco.freqs[k_ref]:.0f} Hz: max {err_ref.max():6.1%}, median {np.median(err_ref):5.1%};"
-          f" at 0 Hz: max {ru.analysis.format_small(err_0.max())}")
+    print(
+        f"{name:45s} at {visco.freqs[k_ref]:.0f} Hz: max {err_ref.max():6.1%}, median {np.median(err_ref):5.1%};"
+        f" at 0 Hz: max {ru.analysis.format_small(err_0.max())}"
+    )
 
 # %%
 # The default model holds every tassello within 5 % at the freezing frequency and 0.5 % at 0 Hz
@@ -306,10 +310,14 @@ plt.show()
 # %%
 # NBVAL_CHECK_OUTPUT
 # G_H(0) against the static vertical stiffness of the loaded tire
-print(f"G_H(0) direct {visco.G_H[0].real / 1e3:.2f} N/mm, modal {reduced.frf.G_H[0].real / 1e3:.2f} N/mm, "
-      f"static tangent stiffness {static.vertical_stiffness / 1e3:.2f} N/mm")
-print(f"|G_H(0)| / K_v - 1 = {abs(visco.G_H[0]) / static.vertical_stiffness - 1:+.2e} "
-      "(the footprint sticks in the FRFs, slides while loading)")
+print(
+    f"G_H(0) direct {visco.G_H[0].real / 1e3:.2f} N/mm, modal {reduced.frf.G_H[0].real / 1e3:.2f} N/mm, "
+    f"static tangent stiffness {static.vertical_stiffness / 1e3:.2f} N/mm"
+)
+print(
+    f"|G_H(0)| / K_v - 1 = {abs(visco.G_H[0]) / static.vertical_stiffness - 1:+.2e} "
+    "(the footprint sticks in the FRFs, slides while loading)"
+)
 assert abs(abs(visco.G_H[0]) / static.vertical_stiffness - 1) < 0.01
 
 # %% [markdown]

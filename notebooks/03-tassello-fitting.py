@@ -95,17 +95,22 @@ plt.show()
 # The fits used by the later stages (cached): lowest order with every tassello within 1 %
 fits = pipeline.tassello_fits(tire, road=road)
 table = fits.table()
-print(f"{len(fits)} tasselli, {fits.n_poles} poles and {fits.n_poles} zeros each, band "
-      f"{fits.band[0]:.0f}-{fits.band[1]:.0f} Hz")
+print(
+    f"{len(fits)} tasselli, {fits.n_poles} poles and {fits.n_poles} zeros each, band "
+    f"{fits.band[0]:.0f}-{fits.band[1]:.0f} Hz"
+)
 print(f"relative RMS error: max {table['rms error'].max():.4f}, median {table['rms error'].median():.4f}")
-print(f"every pole stable: {bool((table['max Re(p) (1/s)'] < 0).all())}; "
-      f"DC imposed: max DC error {ru.analysis.format_small(table['DC error'].max(), 1e-10)}")
+print(
+    f"every pole stable: {bool((table['max Re(p) (1/s)'] < 0).all())}; "
+    f"DC imposed: max DC error {ru.analysis.format_small(table['DC error'].max(), 1e-10)}"
+)
 assert table["rms error"].max() < tolerance and (table["max Re(p) (1/s)"] < 0).all()
 
 # %%
 # Relative RMS error of each tassello's fit on the footprint
-ax = plotting.plot_tassello_map(static, 100 * table["rms error"].to_numpy(), "rms error (%)", cmap="viridis",
-                                symmetric=False)
+ax = plotting.plot_tassello_map(
+    static, 100 * table["rms error"].to_numpy(), "rms error (%)", cmap="viridis", symmetric=False
+)
 ax.set_title(f"Fit error per tassello, {fits.n_poles} poles")
 plt.show()
 
@@ -116,16 +121,22 @@ plt.show()
 # Fig. 6 analogue: target (FEA) vs identified modulus and phase, central tassello
 centre = int(np.argmin(np.hypot(static.tasselli.centre_x, static.tasselli.centre_y)))
 f = visco.freqs[band]
-plotting.plot_fit(f, visco.H[centre, band], fits[centre](f),
-                  f"Fig. 6 analogue: tassello {centre + 1} (footprint centre), {fits.n_poles} poles / zeros")
+plotting.plot_fit(
+    f,
+    visco.H[centre, band],
+    fits[centre](f),
+    f"Fig. 6 analogue: tassello {centre + 1} (footprint centre), {fits.n_poles} poles / zeros",
+)
 plt.show()
 
 # %%
 # NBVAL_CHECK_OUTPUT
 # Its fit error, and the one with the largest error
 worst = int(table["rms error"].to_numpy().argmax())
-print(f"tassello {centre + 1} (centre): rms error {fits[centre].rms_error:.4f}, largest deviation "
-      f"{fits[centre].max_error:.4f} of its peak")
+print(
+    f"tassello {centre + 1} (centre): rms error {fits[centre].rms_error:.4f}, largest deviation "
+    f"{fits[centre].max_error:.4f} of its peak"
+)
 print(f"tassello {worst + 1} (worst):  rms error {fits[worst].rms_error:.4f}")
 
 # %% [markdown]
@@ -138,8 +149,10 @@ print(f"tassello {worst + 1} (worst):  rms error {fits[worst].rms_error:.4f}")
 # One tassello (Eq. 2) and the assembled fixed-hub tire (Eq. 3-4)
 tassello = ru.realize(fits[centre])
 tire_F = ru.assemble_fixed_hub(fits)
-print(f"tassello {centre + 1}: {tassello.nstates} states; A block diagonal: "
-      f"{np.count_nonzero(tassello.A)} non-zeros of {tassello.A.size}")
+print(
+    f"tassello {centre + 1}: {tassello.nstates} states; A block diagonal: "
+    f"{np.count_nonzero(tassello.A)} non-zeros of {tassello.A.size}"
+)
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -148,9 +161,13 @@ poles = np.linalg.eigvals(tire_F.A)
 dc = np.ravel(tire_F.dcgain())
 static_influence = visco.H[:, 0].real
 print(f"(A_F, B_F, C_F, D_F): {tire_F.nstates} states, {tire_F.ninputs} inputs (tasselli), {tire_F.noutputs} output")
-print(f"slowest pole: Re = {poles.real.max():.2f} 1/s (stable); fastest: |p| = {np.abs(poles).max() / (2 * np.pi):.0f} Hz")
-print(f"DC gains vs the static influence H_i(0): max relative difference "
-      f"{ru.analysis.format_small(np.max(np.abs(dc / static_influence - 1)), 1e-10)}")
+print(
+    f"slowest pole: Re = {poles.real.max():.2f} 1/s (stable); fastest: |p| = {np.abs(poles).max() / (2 * np.pi):.0f} Hz"
+)
+print(
+    f"DC gains vs the static influence H_i(0): max relative difference "
+    f"{ru.analysis.format_small(np.max(np.abs(dc / static_influence - 1)), 1e-10)}"
+)
 print(f"sum of DC gains {dc.sum() / 1e3:.2f} N/mm = H_tot(0) {visco.H_tot[0].real / 1e3:.2f} N/mm")
 
 # %% [markdown]
@@ -241,13 +258,17 @@ from ipywidgets import IntSlider, interact
 
 def show_fit(tassello=37, n_poles=14):
     fit = ru.vector_fit(f, visco.H[tassello - 1, band], n_poles=n_poles)
-    plotting.plot_fit(f, visco.H[tassello - 1, band], fit(f),
-                      f"tassello {tassello}, {n_poles} poles: rms error {fit.rms_error:.2%}")
+    plotting.plot_fit(
+        f, visco.H[tassello - 1, band], fit(f), f"tassello {tassello}, {n_poles} poles: rms error {fit.rms_error:.2%}"
+    )
     plt.show()
 
 
-interact(show_fit, tassello=IntSlider(value=centre + 1, min=1, max=len(fits), continuous_update=False),
-         n_poles=IntSlider(value=fits.n_poles, min=4, max=20, continuous_update=False))
+interact(
+    show_fit,
+    tassello=IntSlider(value=centre + 1, min=1, max=len(fits), continuous_update=False),
+    n_poles=IntSlider(value=fits.n_poles, min=4, max=20, continuous_update=False),
+)
 
 # %% [markdown]
 # **Next:** notebook 04 drives this fixed-hub tire with a cleat on the 1.25 m drum (paper

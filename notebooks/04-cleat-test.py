@@ -74,8 +74,10 @@ base = cleat_base or conditions["cleat"]["base"]
 # %%
 # NBVAL_CHECK_OUTPUT
 # The test
-print(f"{tire.name}: drum R = {drum.road.drum_radius:.2f} m, footprint {drum.footprint_length * 1e3:.0f} mm long, "
-      f"{drum.tasselli.n} tasselli; state-space tire: {tire_F.nstates} states, {tire_F.ninputs} inputs")
+print(
+    f"{tire.name}: drum R = {drum.road.drum_radius:.2f} m, footprint {drum.footprint_length * 1e3:.0f} mm long, "
+    f"{drum.tasselli.n} tasselli; state-space tire: {tire_F.nstates} states, {tire_F.ninputs} inputs"
+)
 print(f"cleat: {conditions['cleat']['shape']}, base {base * 1e3:.0f} mm, height {height * 1e3:.0f} mm")
 
 # %% [markdown]
@@ -97,7 +99,9 @@ plt.show()
 # %%
 # NBVAL_CHECK_OUTPUT
 # Sampling of the two runs
-print(f"30 km/h: {dynamic_road.sample_rate:.0f} Hz, {dynamic_road.u.shape[1]} samples of {dynamic_road.u.shape[0]} inputs")
+print(
+    f"30 km/h: {dynamic_road.sample_rate:.0f} Hz, {dynamic_road.u.shape[1]} samples of {dynamic_road.u.shape[0]} inputs"
+)
 quasi_road = ru.cleat_input(drum, quasi_static_kmh / 3.6, height=height, base=base, distance=(-0.1, 0.15))
 print(f"{quasi_static_kmh} km/h: {quasi_road.sample_rate:.0f} Hz, {quasi_road.u.shape[1]} samples")
 
@@ -112,8 +116,10 @@ print(f"{quasi_static_kmh} km/h: {quasi_road.sample_rate:.0f} Hz, {quasi_road.u.
 # Fig. 9 analogue: quasi-static (base curve) and 30 km/h (dynamic curve) runs
 quasi = cleat.analyse_run(ru.simulate(sections, quasi_road), drum, base, dynamic=False)
 dynamic = cleat.analyse_run(ru.simulate(sections, dynamic_road), drum, base, dynamic=True)
-ax = plotting.plot_cleat_runs({f"base curve ({quasi_static_kmh} km/h)": quasi, f"dynamic curve ({speed_kmh:.0f} km/h)": dynamic},
-                              title="Fig. 9 analogue: simulated hub force during a cleat test")
+ax = plotting.plot_cleat_runs(
+    {f"base curve ({quasi_static_kmh} km/h)": quasi, f"dynamic curve ({speed_kmh:.0f} km/h)": dynamic},
+    title="Fig. 9 analogue: simulated hub force during a cleat test",
+)
 plt.show()
 
 # %%
@@ -189,8 +195,10 @@ plt.show()
 # Row influences, and the quasi-static force straight from them (no dynamics at all)
 print((rows.round(1) + 0.0).to_string(float_format=lambda v: f"{v:.1f}"))  # + 0.0: no "-0.0"
 direct_quasi = cleat.quasi_static_force(static_influence, quasi_road)
-print(f"peak of sum_i H_i(0) u_i: {direct_quasi.max():.1f} N; simulated at {quasi_static_kmh} km/h: "
-      f"{quasi.peak_force:.1f} N")
+print(
+    f"peak of sum_i H_i(0) u_i: {direct_quasi.max():.1f} N; simulated at {quasi_static_kmh} km/h: "
+    f"{quasi.peak_force:.1f} N"
+)
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -260,8 +268,13 @@ assert abs(peak_difference) < 0.02 and rms_difference < 0.02
 # Fast block-diagonal simulation vs control.forced_response on 300 samples of the 30 km/h run
 import control
 
-short = ru.RoadInput(t=dynamic_road.t[:300], distance=dynamic_road.distance[:300], u=dynamic_road.u[:, 60:360],
-                     speed=dynamic_road.speed, description="excerpt")
+short = ru.RoadInput(
+    t=dynamic_road.t[:300],
+    distance=dynamic_road.distance[:300],
+    u=dynamic_road.u[:, 60:360],
+    speed=dynamic_road.speed,
+    description="excerpt",
+)
 reference = control.forced_response(tire_F, T=short.t, U=short.u).outputs
 fast = ru.simulate(sections, short).force
 agreement = np.max(np.abs(fast - reference)) / np.max(np.abs(reference))
@@ -280,16 +293,19 @@ from ipywidgets import FloatSlider, interact
 
 
 def show_cleat(speed_kmh=30.0, height_mm=15.0, base_mm=15.0):
-    run = cleat.run_cleat(sections, drum, speed_kmh / 3.6, height=height_mm / 1e3, base=base_mm / 1e3,
-                          distance=(-0.1, 0.6), dynamic=False)
+    run = cleat.run_cleat(
+        sections, drum, speed_kmh / 3.6, height=height_mm / 1e3, base=base_mm / 1e3, distance=(-0.1, 0.6), dynamic=False
+    )
     plotting.plot_cleat_runs({f"{speed_kmh:.0f} km/h": run}, title=f"peak {run.peak_force:.0f} N")
     plt.show()
 
 
-interact(show_cleat,
-         speed_kmh=FloatSlider(value=30.0, min=5.0, max=120.0, step=5.0, continuous_update=False),
-         height_mm=FloatSlider(value=15.0, min=2.0, max=30.0, step=1.0, continuous_update=False),
-         base_mm=FloatSlider(value=15.0, min=5.0, max=60.0, step=5.0, continuous_update=False))
+interact(
+    show_cleat,
+    speed_kmh=FloatSlider(value=30.0, min=5.0, max=120.0, step=5.0, continuous_update=False),
+    height_mm=FloatSlider(value=15.0, min=2.0, max=30.0, step=1.0, continuous_update=False),
+    base_mm=FloatSlider(value=15.0, min=5.0, max=60.0, step=5.0, continuous_update=False),
+)
 
 # %% [markdown]
 # **Next:** notebook 05 frees the hub (Eq. 5-7) so the tire can be coupled to a vehicle.

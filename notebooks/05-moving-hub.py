@@ -75,16 +75,23 @@ hub = pipeline.hub_fit(tire)
 # %%
 # NBVAL_CHECK_OUTPUT
 # The 195/65 R15 and its models
-print(f"{tire.name} at {tire.operating.vertical_load:.0f} N: K_v = {static.vertical_stiffness / 1e3:.1f} N/mm, "
-      f"{static.tasselli.n} tasselli, {fits.n_poles} poles each (max fit error {fits.rms_errors.max():.2%})")
-print(f"G_H: {hub.n_poles} poles / zeros, relative RMS error {hub[0].rms_error:.2%} over 0-250 Hz, "
-      f"G_H(0) = {hub[0].dc_gain / 1e3:.1f} N/mm")
+print(
+    f"{tire.name} at {tire.operating.vertical_load:.0f} N: K_v = {static.vertical_stiffness / 1e3:.1f} N/mm, "
+    f"{static.tasselli.n} tasselli, {fits.n_poles} poles each (max fit error {fits.rms_errors.max():.2%})"
+)
+print(
+    f"G_H: {hub.n_poles} poles / zeros, relative RMS error {hub[0].rms_error:.2%} over 0-250 Hz, "
+    f"G_H(0) = {hub[0].dc_gain / 1e3:.1f} N/mm"
+)
 
 # %%
 # G_H: direct FE and fitted, 0-250 Hz
 band = visco.freqs <= 250
-plotting.plot_frf_pair(visco.freqs[band], {"G_H, FE direct": visco.G_H[band], f"G_H, fit ({hub.n_poles} poles)": hub[0](visco.freqs[band])},
-                       "|G_H| (N/m)")
+plotting.plot_frf_pair(
+    visco.freqs[band],
+    {"G_H, FE direct": visco.G_H[band], f"G_H, fit ({hub.n_poles} poles)": hub[0](visco.freqs[band])},
+    "|G_H| (N/m)",
+)
 plt.show()
 
 # %% [markdown]
@@ -94,8 +101,10 @@ plt.show()
 # NBVAL_CHECK_OUTPUT
 # (A_M, B_M, C_M, D_M): the fixed-hub tire and G_H side by side
 tire_M = movinghub.assemble_moving_hub(fits, hub)
-print(f"moving-hub tire: {tire_M.nstates} states = {fits.n_poles} x {len(fits)} (tasselli) + {hub.n_poles} (hub); "
-      f"{tire_M.ninputs} inputs = {len(fits)} tasselli + hub; {tire_M.noutputs} output (F_M)")
+print(
+    f"moving-hub tire: {tire_M.nstates} states = {fits.n_poles} x {len(fits)} (tasselli) + {hub.n_poles} (hub); "
+    f"{tire_M.ninputs} inputs = {len(fits)} tasselli + hub; {tire_M.noutputs} output (F_M)"
+)
 print(f"stable: {bool(np.all(np.linalg.eigvals(tire_M.A).real < 0))}")
 
 # %% [markdown]
@@ -112,17 +121,22 @@ print(f"stable: {bool(np.all(np.linalg.eigvals(tire_M.A).real < 0))}")
 # FE with a free hub vs the RM model (Eq. 5-7), 1-250 Hz
 freqs = np.arange(1.0, 251.0)
 u_fe, f_fe = movinghub.fe_moving_hub(fet, static, freqs, hub_mass, suspension_stiffness, suspension_damping)
-own_mass = float(fet.M[fet.mesh.hub_dofs[1], fet.mesh.hub_dofs[1]])
+own_mass = fet.hub_vertical_mass
 u_rm, f_rm = movinghub.rm_moving_hub(fits, hub, freqs, hub_mass + own_mass, suspension_stiffness, suspension_damping)
 omega2 = (2 * np.pi * freqs) ** 2
 
 # %%
 # Hub acceleration and hub force per unit road displacement of the whole footprint
 fig, axes = plt.subplots(1, 2, figsize=(12, 4))
-plotting.plot_frf_pair(freqs, {"FE, hub free (direct)": omega2 * u_fe, "RM model (Eq. 5-7)": omega2 * u_rm},
-                       "|hub acceleration / road displacement| (1/s^2)", ax=axes[0])
-plotting.plot_frf_pair(freqs, {"FE, hub free (direct)": f_fe, "RM model (Eq. 5-7)": f_rm},
-                       "|F_M / road displacement| (N/m)", ax=axes[1])
+plotting.plot_frf_pair(
+    freqs,
+    {"FE, hub free (direct)": omega2 * u_fe, "RM model (Eq. 5-7)": omega2 * u_rm},
+    "|hub acceleration / road displacement| (1/s^2)",
+    ax=axes[0],
+)
+plotting.plot_frf_pair(
+    freqs, {"FE, hub free (direct)": f_fe, "RM model (Eq. 5-7)": f_rm}, "|F_M / road displacement| (N/m)", ax=axes[1]
+)
 plt.show()
 
 # %%
@@ -193,9 +207,11 @@ def show_moving_hub(hub_mass_kg=32.0, stiffness_N_per_mm=25.0):
     plt.show()
 
 
-interact(show_moving_hub,
-         hub_mass_kg=FloatSlider(value=32.0, min=5.0, max=80.0, step=1.0, continuous_update=False),
-         stiffness_N_per_mm=FloatSlider(value=25.0, min=5.0, max=100.0, step=5.0, continuous_update=False))
+interact(
+    show_moving_hub,
+    hub_mass_kg=FloatSlider(value=32.0, min=5.0, max=80.0, step=1.0, continuous_update=False),
+    stiffness_N_per_mm=FloatSlider(value=25.0, min=5.0, max=100.0, step=5.0, continuous_update=False),
+)
 
 # %% [markdown]
 # **Next:** notebook 06 builds the road textures that drive this tire; notebook 07 mounts it

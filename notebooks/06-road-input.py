@@ -61,9 +61,11 @@ length = 400.0
 # The two textures
 spectra = {name: textures.load_texture(name) for name in texture_names}
 for name, sp in spectra.items():
-    print(f"{name:7s}: ISO 8608 class {sp.iso_class} (G(n0) = {sp.reference_psd * 1e6:.0f}e-6 m^3, w = {sp.exponent:.1f}), "
-          f"texture slope {sp.texture_exponent:.1f} above {sp.texture_wavenumber:.1f} cycles/m, "
-          f"wavelengths {sp.min_wavelength * 100:.0f} cm - {sp.max_wavelength:.0f} m")
+    print(
+        f"{name:7s}: ISO 8608 class {sp.iso_class} (G(n0) = {sp.reference_psd * 1e6:.0f}e-6 m^3, w = {sp.exponent:.1f}), "
+        f"texture slope {sp.texture_exponent:.1f} above {sp.texture_wavenumber:.1f} cycles/m, "
+        f"wavelengths {sp.min_wavelength * 100:.0f} cm - {sp.max_wavelength:.0f} m"
+    )
 
 # %%
 # Generate one profile per texture (seeded), and estimate their PSD (Welch)
@@ -79,7 +81,9 @@ plt.show()
 # Generated vs target PSD, averaged over octave bands (one realisation, 400 m)
 bands = [(0.125, 0.25), (0.25, 0.5), (0.5, 1), (1, 2), (2, 4), (4, 8), (8, 16)]
 for name, (nm, gm) in measured.items():
-    ratios = [np.mean(gm[(nm >= lo) & (nm < hi)]) / np.mean(spectra[name].psd(nm[(nm >= lo) & (nm < hi)])) for lo, hi in bands]
+    ratios = [
+        np.mean(gm[(nm >= lo) & (nm < hi)]) / np.mean(spectra[name].psd(nm[(nm >= lo) & (nm < hi)])) for lo, hi in bands
+    ]
     print(f"{name:7s}: " + " ".join(f"{r:.2f}" for r in ratios))
     assert all(0.7 < r < 1.3 for r in ratios)
 
@@ -96,7 +100,9 @@ again = textures.generate_profile(spectra["rough"], length, 0.002, seed=seed)
 other = textures.generate_profile(spectra["rough"], length, 0.002, seed=seed + 1)
 print(f"seed {seed} twice: identical = {np.array_equal(again.z, profiles['rough'].z)}")
 print(f"seed {seed + 1}: correlation with seed {seed} = {np.corrcoef(other.z[0], profiles['rough'].z[0])[0, 1]:+.2f}")
-print(f"RMS height: {profiles['rough'].z.std() * 1e3:.2f} mm (rough), {profiles['smooth'].z.std() * 1e3:.2f} mm (smooth)")
+print(
+    f"RMS height: {profiles['rough'].z.std() * 1e3:.2f} mm (rough), {profiles['smooth'].z.std() * 1e3:.2f} mm (smooth)"
+)
 
 # %%
 # The first 4 m of each profile
@@ -146,8 +152,10 @@ for track in range(len(strip_y)):
     k = (nm >= 1) & (nm < 8)
     ratios.append(np.mean(gm[k]) / np.mean(spectra["rough"].psd(nm[k])))
 print(f"PSD / target, 1-8 cycles/m, per track: min {min(ratios):.2f}, max {max(ratios):.2f}")
-print(f"height correlation: neighbours {np.corrcoef(field.z[0], field.z[1])[0, 1]:.3f}, "
-      f"edge to edge {np.corrcoef(field.z[0], field.z[-1])[0, 1]:.3f}")
+print(
+    f"height correlation: neighbours {np.corrcoef(field.z[0], field.z[1])[0, 1]:.3f}, "
+    f"edge to edge {np.corrcoef(field.z[0], field.z[-1])[0, 1]:.3f}"
+)
 
 # %% [markdown]
 # ## 3. Through the footprint
@@ -203,8 +211,10 @@ k100 = int(np.argmin(np.abs(visco.freqs - 100.0)))
 for wavelength in (1.0, 0.5, 0.2, 0.1, 0.05, 0.03):
     gain = np.mean(np.abs(ru.corner.kernel_transforms(static, [1.0 / wavelength])[centre]))
     error = ru.corner.tassellation_error(static, visco.H_points[:, k100], [wavelength])[0]
-    print(f"lambda = {wavelength * 100:5.1f} cm: {gain:5.1%} of the amplitude reaches a tassello; "
-          f"hub-force error of the tasselli {error:5.1%}")
+    print(
+        f"lambda = {wavelength * 100:5.1f} cm: {gain:5.1%} of the amplitude reaches a tassello; "
+        f"hub-force error of the tasselli {error:5.1%}"
+    )
 
 # %% [markdown]
 # For wavelengths of half a metre and more the tasselli are within 1 % of the point-resolved
@@ -254,13 +264,17 @@ from ipywidgets import Dropdown, IntSlider, interact
 def show_texture(texture="rough", seed=2002):
     spectrum = textures.load_texture(texture)
     profile = textures.generate_profile(spectrum, 200.0, 0.002, seed=seed)
-    plotting.plot_road_spectra({texture: spectrum}, n, textures.ISO8608_CLASSES,
-                               measured={texture: textures.profile_psd(profile)})
+    plotting.plot_road_spectra(
+        {texture: spectrum}, n, textures.ISO8608_CLASSES, measured={texture: textures.profile_psd(profile)}
+    )
     plt.show()
 
 
-interact(show_texture, texture=Dropdown(options=texture_names, value="rough"),
-         seed=IntSlider(value=2002, min=0, max=5000, continuous_update=False))
+interact(
+    show_texture,
+    texture=Dropdown(options=texture_names, value="rough"),
+    seed=IntSlider(value=2002, min=0, max=5000, continuous_update=False),
+)
 
 # %% [markdown]
 # **Next:** notebook 07 drives the 195/65 R15 on the quarter car over these roads at 120 km/h.

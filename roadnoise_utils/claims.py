@@ -93,7 +93,7 @@ def _corner_context():
 
     car = vehicle.load_vehicle(CAR)
     fet = pipeline.fet_model(car.tire)
-    rim_side = float(fet.M[fet.mesh.hub_dofs[1], fet.mesh.hub_dofs[1]])
+    rim_side = fet.hub_vertical_mass
     model = corner.corner_model(car, pipeline.hub_fit(car.tire), rim_side)
     sections = modal_sections(pipeline.fixed_hub_tire(car.tire))
     return car, pipeline.static_state(car.tire), pipeline.tassello_fits(car.tire), model, sections
@@ -200,7 +200,7 @@ def _moving_hub() -> float:
     fet = pipeline.fet_model(tire)
     f = np.arange(2.0, 251.0, 4.0)
     _, f_fe = movinghub.fe_moving_hub(fet, pipeline.static_state(tire), f, 32.0, 25e3, 3000.0)
-    rim_side = float(fet.M[fet.mesh.hub_dofs[1], fet.mesh.hub_dofs[1]])
+    rim_side = fet.hub_vertical_mass
     _, f_rm = movinghub.rm_moving_hub(
         pipeline.tassello_fits(tire), pipeline.hub_fit(tire), f, 32.0 + rim_side, 25e3, 3000.0
     )

@@ -172,6 +172,15 @@ class FETModel:
     def n_dof(self) -> int:
         return self.mesh.n_dof
 
+    @property
+    def hub_vertical_mass(self) -> float:
+        """Rim-side sidewall mass carried by the hub's vertical DOF (kg).
+
+        The moving-hub stages add it to the vehicle's unsprung mass (paper Eq. 5-7).
+        """
+        z = self.mesh.hub_dofs[1]
+        return float(self.M[z, z])
+
     def modulus_ratio(self, compound: str, omega: float) -> complex:
         """:math:`g_c(\\omega)` of a compound at angular frequency ``omega`` (rad/s)."""
         return complex(self.laws[compound].ratio(omega))

@@ -130,6 +130,39 @@ def modal(
 FIT_TOLERANCE = 0.01
 
 
+def _cached_fit(
+    stage: str,
+    frf_name: str,
+    tire: str | TireSpec,
+    road: str,
+    n_poles: int | None,
+    f_max: float,
+    load: float | None,
+    drum_radius: float | None,
+) -> FitSet:
+    """Cached rational fit of one direct FRF (``"H"`` or ``"G_H"``) of :func:`visco_frf`.
+
+    ``n_poles=None`` takes the lowest order at which every fitted FRF is within
+    :data:`FIT_TOLERANCE`.
+    """
+    spec = tire_spec(tire)
+    inputs = {
+        **_road_inputs(spec, road, load, drum_radius),
+        "n_poles": n_poles,
+        "f_max": float(f_max),
+        "tolerance": FIT_TOLERANCE,
+    }
+    visco = visco_frf(spec, road, load=load, drum_radius=drum_radius, progress=False)
+
+    def compute() -> FitSet:
+        frf = getattr(visco, frf_name)
+        if n_poles is None:
+            return lowest_order(visco.freqs, frf, tolerance=FIT_TOLERANCE, f_max=f_max)
+        return fit_tasselli(visco.freqs, frf, n_poles=n_poles, f_max=f_max)
+
+    return cached(stage, inputs, compute)
+
+
 def tassello_fits(
     tire: str | TireSpec,
     road: str = "flat",
@@ -143,21 +176,7 @@ def tassello_fits(
     ``n_poles=None`` takes the lowest order at which every tassello is fitted within
     :data:`FIT_TOLERANCE` (see notebook 03 for why the direct FRFs and this order).
     """
-    spec = tire_spec(tire)
-    inputs = {
-        **_road_inputs(spec, road, load, drum_radius),
-        "n_poles": n_poles,
-        "f_max": float(f_max),
-        "tolerance": FIT_TOLERANCE,
-    }
-    visco = visco_frf(spec, road, load=load, drum_radius=drum_radius, progress=False)
-
-    def compute() -> FitSet:
-        if n_poles is None:
-            return lowest_order(visco.freqs, visco.H, tolerance=FIT_TOLERANCE, f_max=f_max)
-        return fit_tasselli(visco.freqs, visco.H, n_poles=n_poles, f_max=f_max)
-
-    return cached("tassello_fits", inputs, compute)
+    return _cached_fit("tassello_fits", "H", tire, road, n_poles, f_max, load, drum_radius)
 
 
 def hub_fit(
@@ -169,21 +188,7 @@ def hub_fit(
     drum_radius: float | None = None,
 ) -> FitSet:
     """Cached rational fit of the hub FRF :math:`G_H` (same order rule as :func:`tassello_fits`)."""
-    spec = tire_spec(tire)
-    inputs = {
-        **_road_inputs(spec, road, load, drum_radius),
-        "n_poles": n_poles,
-        "f_max": float(f_max),
-        "tolerance": FIT_TOLERANCE,
-    }
-    visco = visco_frf(spec, road, load=load, drum_radius=drum_radius, progress=False)
-
-    def compute() -> FitSet:
-        if n_poles is None:
-            return lowest_order(visco.freqs, visco.G_H, tolerance=FIT_TOLERANCE, f_max=f_max)
-        return fit_tasselli(visco.freqs, visco.G_H, n_poles=n_poles, f_max=f_max)
-
-    return cached("hub_fit", inputs, compute)
+    return _cached_fit("hub_fit", "G_H", tire, road, n_poles, f_max, load, drum_radius)
 
 
 def fixed_hub_tire(tire: str | TireSpec, road: str = "flat", n_poles: int | None = None):

@@ -26,7 +26,6 @@ Múčka, *Vehicle System Dynamics* 2009, for road-surface coherence).
 
 from __future__ import annotations
 
-import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -34,7 +33,7 @@ import numpy as np
 from scipy.special import gamma as gamma_fn
 from scipy.special import kv
 
-from .paths import data_dir
+from .paths import data_file, read_toml
 
 #: ISO 8608 road classes: geometric-mean displacement PSD at n0 = 0.1 cycles/m (m^3).
 ISO8608_CLASSES = {c: 16e-6 * 4**k for k, c in enumerate("ABCDEFGH")}
@@ -114,14 +113,8 @@ class RoadSpectrum:
 
 def load_texture(name: str | Path) -> RoadSpectrum:
     """A road spectrum from ``data/roads/<name>.toml`` (or a path), validated."""
-    path = Path(name)
-    if path.suffix != ".toml":
-        path = data_dir() / "roads" / f"{name}.toml"
-    if not path.exists():
-        available = sorted(p.stem for p in (data_dir() / "roads").glob("*.toml"))
-        raise FileNotFoundError(f"no road texture {name!r}; available: {available}")
-    with open(path, "rb") as fh:
-        data = tomllib.load(fh)
+    path = data_file(name, "roads", "road texture")
+    data = read_toml(path)
     spectrum = data.get("spectrum", {})
     iso_class = spectrum.pop("iso_class", None)
     if iso_class is not None:

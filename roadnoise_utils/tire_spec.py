@@ -14,14 +14,13 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 import pandas as pd
 
-from .paths import data_dir
+from .paths import data_file, read_toml
 from .viscoelastic import FractionalZener
 
 
@@ -313,14 +312,7 @@ def from_dict(data: dict[str, Any], source: str = "<dict>") -> TireSpec:
 
 def tire_path(name: str | Path) -> Path:
     """Resolve a tire name (``"165_65R14"``) or a path to its TOML file."""
-    path = Path(name)
-    if path.suffix == ".toml" and path.exists():
-        return path
-    candidate = data_dir() / "tires" / f"{name}.toml"
-    if candidate.exists():
-        return candidate
-    available = sorted(p.stem for p in (data_dir() / "tires").glob("*.toml"))
-    raise FileNotFoundError(f"no tire file {name!r}: give a path to a .toml file or one of {available}")
+    return data_file(name, "tires", "tire file")
 
 
 def load_tire(name: str | Path) -> TireSpec:
@@ -343,9 +335,7 @@ def load_tire(name: str | Path) -> TireSpec:
         names the field, its value and the valid range.
     """
     path = tire_path(name)
-    with open(path, "rb") as fh:
-        data = tomllib.load(fh)
-    return from_dict(data, source=path.name)
+    return from_dict(read_toml(path), source=path.name)
 
 
 def tire_table(spec: TireSpec) -> pd.DataFrame:

@@ -18,14 +18,13 @@ it with the moving-hub tire (paper Eq. 5-8 for one corner) is a positive feedbac
 
 from __future__ import annotations
 
-import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 
 import control
 import numpy as np
 
-from .paths import data_dir
+from .paths import data_file, read_toml
 
 _KINDS = {"spring": ("stiffness",), "damper": ("damping",), "maxwell": ("stiffness", "damping")}
 #: Valid ranges (min, max, unit) of the element and mass values.
@@ -99,14 +98,8 @@ def _validate(vehicle: QuarterCar, source: str) -> None:
 
 def load_vehicle(name: str | Path) -> QuarterCar:
     """A vehicle corner from ``data/vehicles/<name>.toml`` (or a path), validated."""
-    path = Path(name)
-    if path.suffix != ".toml":
-        path = data_dir() / "vehicles" / f"{name}.toml"
-    if not path.exists():
-        available = sorted(p.stem for p in (data_dir() / "vehicles").glob("*.toml"))
-        raise FileNotFoundError(f"no vehicle {name!r}; available: {available}")
-    with open(path, "rb") as fh:
-        data = tomllib.load(fh)
+    path = data_file(name, "vehicles", "vehicle")
+    data = read_toml(path)
     elements = tuple(
         Element(
             kind=e["kind"],

@@ -24,7 +24,7 @@ def car_tire():
     static = ru.pipeline.static_state(tire)
     fits = ru.pipeline.tassello_fits(tire)
     hub = ru.pipeline.hub_fit(tire)
-    rim_side = float(fet.M[fet.mesh.hub_dofs[1], fet.mesh.hub_dofs[1]])
+    rim_side = fet.hub_vertical_mass
     return car, fet, static, fits, hub, rim_side
 
 
