@@ -137,10 +137,14 @@ def loaded_modes(
     lt = loaded or loaded_tire(fet, static)
     omega_ref = 2 * np.pi * reference_frequency
     k = lt.stiffness(omega_ref, storage_only=True).tocsc()
-    vals, vecs = spla.eigsh(k, k=n_modes, M=lt.M.tocsc(), sigma=0.0, which="LM")
+    # a fixed ARPACK start vector and a sign convention make the shapes (and figures) repeatable
+    start = np.ones(k.shape[0])
+    vals, vecs = spla.eigsh(k, k=n_modes, M=lt.M.tocsc(), sigma=0.0, which="LM", v0=start)
     order = np.argsort(vals)
     vals, vecs = vals[order], vecs[:, order]
     vecs /= np.sqrt(np.einsum("ir,ir->r", vecs, lt.M @ vecs))
+    largest = vecs[np.argmax(np.abs(vecs), axis=0), np.arange(n_modes)]
+    vecs *= np.sign(largest)
     omega2 = np.maximum(vals, 0.0)
     row = lt.hub_row(omega_ref, storage_only=True).real
     b_tot = fet.modulus_ratio("tread", omega_ref).real * np.asarray(lt.road_input.sum(axis=1)).ravel()
