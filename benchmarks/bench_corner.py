@@ -20,15 +20,16 @@ import numpy as np
 
 import roadnoise_utils as ru
 from roadnoise_utils import corner, textures, vehicle
-from roadnoise_utils.road import profile_input
+from roadnoise_utils.road import contact_tracks, profile_input
 from roadnoise_utils.simulation import modal_sections
 
 
 def main() -> None:
+    road_test = ru.conditions.load_conditions("road_test")
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--vehicle", default="midsize_195_65R15")
-    parser.add_argument("--speed-kmh", type=float, default=120.0)
-    parser.add_argument("--duration", type=float, default=10.0)
+    parser.add_argument("--speed-kmh", type=float, default=road_test["speed_kmh"])
+    parser.add_argument("--duration", type=float, default=road_test["duration"])
     args = parser.parse_args()
     car = vehicle.load_vehicle(args.vehicle)
     tire = ru.load_tire(car.tire)
@@ -40,7 +41,7 @@ def main() -> None:
     speed = args.speed_kmh / 3.6
     length = args.duration * speed
     spectrum = textures.load_texture("rough")
-    strips = np.unique(static.tasselli.node_y)
+    strips = contact_tracks(static)
     print(f"{tire.name} on {car.name}: {args.duration:g} s at {args.speed_kmh:g} km/h, 10 kHz")
     print(
         "| road | generate road (s) | tassello inputs (s) | F_F, fast simulation (s) | corner + spectra (s) | total (s) | goal |"
@@ -83,10 +84,7 @@ def main() -> None:
     ours = ru.simulation.response(
         model,
         road.t[:n],
-        ru.simulate(
-            sections,
-            ru.RoadInput(t=road.t[:n], distance=road.distance[:n], u=road.u[:, :n], speed=speed, description=""),
-        ).force[None, :],
+        ru.simulate(sections, road.excerpt(0, n)).force[None, :],
     )
     t_ours = time.perf_counter() - t0
     diff = np.max(np.abs(ours[1:] - ref)) / np.max(np.abs(ref))

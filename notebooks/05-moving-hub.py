@@ -43,11 +43,12 @@ from roadnoise_utils import movinghub, pipeline, plotting
 ru.set_style()
 
 # %% tags=["parameters"]
-# Parameters (papermill): tire, the check's hub mass (kg), suspension stiffness (N/m) and damping (N s/m)
+# Parameters (papermill): tire, the check's hub mass (kg, without the tire), suspension stiffness (N/m)
+# and damping (N s/m); None takes the value of data/conditions/moving_hub_check.toml
 tire_name = "195_65R15"
-hub_mass = 32.0
-suspension_stiffness = 25.0e3
-suspension_damping = 3000.0
+hub_mass = None
+suspension_stiffness = None
+suspension_damping = None
 
 # %%
 # Fig. 7 analogue: F_M = F_F + F_H
@@ -71,6 +72,9 @@ static = pipeline.static_state(tire)
 visco = pipeline.visco_frf(tire)
 fits = pipeline.tassello_fits(tire)
 hub = pipeline.hub_fit(tire)
+suspension = ru.conditions.with_defaults(
+    "moving_hub_check", "hub", mass=hub_mass, stiffness=suspension_stiffness, damping=suspension_damping
+)
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -120,9 +124,9 @@ print(f"stable: {bool(np.all(np.linalg.eigvals(tire_M.A).real < 0))}")
 # NBVAL_IGNORE_OUTPUT
 # FE with a free hub vs the RM model (Eq. 5-7), 1-250 Hz
 freqs = np.arange(1.0, 251.0)
-u_fe, f_fe = movinghub.fe_moving_hub(fet, static, freqs, hub_mass, suspension_stiffness, suspension_damping)
-own_mass = fet.hub_vertical_mass
-u_rm, f_rm = movinghub.rm_moving_hub(fits, hub, freqs, hub_mass + own_mass, suspension_stiffness, suspension_damping)
+hub_suspension = (suspension["mass"], suspension["stiffness"], suspension["damping"])
+u_fe, f_fe = movinghub.fe_moving_hub(fet, static, freqs, *hub_suspension)
+u_rm, f_rm = movinghub.rm_moving_hub(fits, hub, freqs, *hub_suspension, tire_hub_mass=fet.hub_vertical_mass)
 omega2 = (2 * np.pi * freqs) ** 2
 
 # %%
@@ -143,8 +147,8 @@ plt.show()
 # NBVAL_CHECK_OUTPUT
 # Relative errors of the RM model against the FE model with a free hub, 1-250 Hz
 errors = {
-    "hub acceleration": np.linalg.norm(omega2 * (u_rm - u_fe)) / np.linalg.norm(omega2 * u_fe),
-    "hub force F_M": np.linalg.norm(f_rm - f_fe) / np.linalg.norm(f_fe),
+    "hub acceleration": ru.analysis.relative_rms_error(omega2 * u_rm, omega2 * u_fe),
+    "hub force F_M": ru.analysis.relative_rms_error(f_rm, f_fe),
 }
 for name, value in errors.items():
     print(f"{name:18s}: relative RMS error {value:.2%}")
@@ -198,10 +202,11 @@ ru.claims.check(claims)
 from ipywidgets import FloatSlider, interact
 
 
-def show_moving_hub(hub_mass_kg=32.0, stiffness_N_per_mm=25.0):
+def show_moving_hub(hub_mass_kg, stiffness_N_per_mm):
     f = np.arange(5.0, 251.0, 2.0)
-    u_a, _ = movinghub.fe_moving_hub(fet, static, f, hub_mass_kg, stiffness_N_per_mm * 1e3, suspension_damping)
-    u_b, _ = movinghub.rm_moving_hub(fits, hub, f, hub_mass_kg + own_mass, stiffness_N_per_mm * 1e3, suspension_damping)
+    check = (hub_mass_kg, stiffness_N_per_mm * 1e3, suspension["damping"])
+    u_a, _ = movinghub.fe_moving_hub(fet, static, f, *check)
+    u_b, _ = movinghub.rm_moving_hub(fits, hub, f, *check, tire_hub_mass=fet.hub_vertical_mass)
     w2 = (2 * np.pi * f) ** 2
     plotting.plot_frf_pair(f, {"FE, hub free": w2 * u_a, "RM model": w2 * u_b}, "|hub acceleration / road| (1/s^2)")
     plt.show()
@@ -209,8 +214,10 @@ def show_moving_hub(hub_mass_kg=32.0, stiffness_N_per_mm=25.0):
 
 interact(
     show_moving_hub,
-    hub_mass_kg=FloatSlider(value=32.0, min=5.0, max=80.0, step=1.0, continuous_update=False),
-    stiffness_N_per_mm=FloatSlider(value=25.0, min=5.0, max=100.0, step=5.0, continuous_update=False),
+    hub_mass_kg=FloatSlider(value=suspension["mass"], min=5.0, max=80.0, step=1.0, continuous_update=False),
+    stiffness_N_per_mm=FloatSlider(
+        value=suspension["stiffness"] / 1e3, min=5.0, max=100.0, step=5.0, continuous_update=False
+    ),
 )
 
 # %% [markdown]

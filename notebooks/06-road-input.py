@@ -35,17 +35,25 @@ import numpy as np
 
 import roadnoise_utils as ru
 from roadnoise_utils import pipeline, plotting, textures
-from roadnoise_utils.road import profile_input
+from roadnoise_utils.road import contact_tracks, profile_input
 
 ru.set_style()
 
 # %% tags=["parameters"]
-# Parameters (papermill): tire, textures (data/roads), seed, speed (km/h), road length (m)
+# Parameters (papermill): tire, textures (data/roads), seed, speed (km/h), road length (m);
+# None takes the paper's road test from data/conditions/road_test.toml
 tire_name = "195_65R15"
-texture_names = ["rough", "smooth"]
-seed = 2002
-speed_kmh = 120.0
+texture_names = None
+seed = None
+speed_kmh = None
 length = 400.0
+
+# %%
+# The parameters left at None take the paper's road test
+road_test = ru.conditions.with_defaults(
+    "road_test", textures=texture_names, seed=seed, speed_kmh=speed_kmh, sample_rate=None
+)
+texture_names, seed, speed_kmh = road_test["textures"], road_test["seed"], road_test["speed_kmh"]
 
 # %% [markdown]
 # ## 1. Spectra: ISO 8608 and the megatexture
@@ -127,7 +135,7 @@ plt.show()
 # Coherence between tracks 14 mm and 126 mm apart
 tire = ru.load_tire(tire_name)
 static = pipeline.static_state(tire)
-strip_y = np.unique(static.tasselli.node_y)
+strip_y = contact_tracks(static)
 fig, ax = plt.subplots(figsize=(7, 3.5))
 for b in (strip_y[1] - strip_y[0], strip_y[-1] - strip_y[0]):
     ax.semilogx(n, textures.coherence(spectra["rough"], n, b), label=f"tracks {b * 1e3:.0f} mm apart")
@@ -160,24 +168,17 @@ print(
 # %% [markdown]
 # ## 3. Through the footprint
 #
-# At $120$ km/h the road passes at 33 m/s; each tassello's input is the correlation of the
-# road with its shape-function kernel (sample rate 10 kHz: 20 samples per period of 250 Hz,
-# 3.3 mm of road per sample).
+# At the paper's 120 km/h the road passes at 33 m/s; each tassello's input is the correlation
+# of the road with its shape-function kernel (sample rate 10 kHz: 40 samples per period of
+# 250 Hz, 3.3 mm of road per sample).
 
 # %%
-# Tassello inputs for the 2D and 3D rough roads, 0.1 s at 120 km/h
+# Tassello inputs of the leading row for the 2D and 3D rough roads, the first 0.1 s
 speed = speed_kmh / 3.6
-road_2d = profile_input(static, profiles["rough"].as_2d(), speed, (0.0, 3.0), sample_rate=10000, oversample=1)
-road_3d = profile_input(static, field.as_3d(), speed, (0.0, 3.0), sample_rate=10000, oversample=1)
-t = static.tasselli
-lead = [i for i in range(t.n) if t.row[i] == 0]
-fig, axes = plt.subplots(1, 2, figsize=(12, 3.5), sharey=True)
-for ax, road, title in ((axes[0], road_2d, "2D road: every column sees the same track"), (axes[1], road_3d, "3D road")):
-    for i in lead:
-        ax.plot(road.t[:1000] * 1e3, road.u[i, :1000] * 1e3, lw=0.8)
-    ax.set_title(f"{title} (leading row)")
-    ax.set_xlabel("time (ms)")
-axes[0].set_ylabel("tassello displacement (mm)")
+sample_rate = road_test["sample_rate"]
+road_2d = profile_input(static, profiles["rough"].as_2d(), speed, (0.0, 3.0), sample_rate=sample_rate, oversample=1)
+road_3d = profile_input(static, field.as_3d(), speed, (0.0, 3.0), sample_rate=sample_rate, oversample=1)
+plotting.plot_row_inputs({"2D road: every column sees the same track": road_2d, "3D road": road_3d}, static)
 plt.show()
 
 # %% [markdown]
@@ -190,6 +191,7 @@ plt.show()
 # %%
 # Kernel gain vs wavelength for the centre column's tasselli
 wavelengths = np.logspace(np.log10(0.01), np.log10(1.0), 300)
+t = static.tasselli
 centre = [i for i in range(t.n) if t.column[i] == int(np.median(t.column))]
 gains = ru.corner.kernel_transforms(static, 1.0 / wavelengths)[centre]
 plotting.plot_kernel_filter(wavelengths, gains, [f"tassello {i + 1} ({t.length[i] * 1e3:.0f} mm)" for i in centre])
@@ -261,7 +263,7 @@ ru.claims.check(claims)
 from ipywidgets import Dropdown, IntSlider, interact
 
 
-def show_texture(texture="rough", seed=2002):
+def show_texture(texture, seed):
     spectrum = textures.load_texture(texture)
     profile = textures.generate_profile(spectrum, 200.0, 0.002, seed=seed)
     plotting.plot_road_spectra(
@@ -272,8 +274,8 @@ def show_texture(texture="rough", seed=2002):
 
 interact(
     show_texture,
-    texture=Dropdown(options=texture_names, value="rough"),
-    seed=IntSlider(value=2002, min=0, max=5000, continuous_update=False),
+    texture=Dropdown(options=texture_names, value=texture_names[0]),
+    seed=IntSlider(value=seed, min=0, max=5000, continuous_update=False),
 )
 
 # %% [markdown]

@@ -6,14 +6,13 @@ the obtained values are computed from the static state and the direct FRF of the
 
 from __future__ import annotations
 
-import tomllib
 from pathlib import Path
 
 import pandas as pd
 
 from . import pipeline
 from .analysis import resonance_peaks
-from .paths import data_dir
+from .paths import data_dir, read_toml
 from .tire_spec import TireSpec
 
 
@@ -22,8 +21,7 @@ def calibration_targets(tire: str) -> dict:
     path = data_dir() / "calibration" / f"{tire}.toml"
     if not path.exists():
         return {}
-    with open(path, "rb") as fh:
-        return tomllib.load(fh)
+    return read_toml(path)
 
 
 def calibration_values(tire: str | TireSpec, road: str = "flat") -> dict[str, float]:

@@ -10,7 +10,6 @@ reproduction command show; :func:`write_report` writes it as CSV and Markdown.
 from __future__ import annotations
 
 import functools
-import tomllib
 from collections.abc import Callable
 from pathlib import Path
 
@@ -18,8 +17,9 @@ import numpy as np
 import pandas as pd
 
 from . import pipeline
-from .analysis import band_errors, peak_comparison, resonance_peaks
-from .paths import data_dir
+from .analysis import band_errors, peak_comparison, relative_rms_error, resonance_peaks
+from .conditions import load_conditions
+from .paths import data_dir, read_toml
 
 PAPER_TIRE = "165_65R14"
 CAR = "midsize_195_65R15"
@@ -27,8 +27,7 @@ CAR = "midsize_195_65R15"
 
 def load_claims() -> list[dict]:
     """The claims of ``data/paper/claims.toml``, in order."""
-    with open(data_dir() / "paper" / "claims.toml", "rb") as fh:
-        claims = tomllib.load(fh)["claim"]
+    claims = read_toml(data_dir() / "paper" / "claims.toml")["claim"]
     tests = ("rel", "min", "max", "equal")
     for c in claims:
         if not any(t in c for t in tests):
@@ -79,10 +78,11 @@ def _drum_runs():
     from .cleat import run_cleat
     from .simulation import modal_sections
 
+    speeds = load_conditions("cleat_test")["speeds"]
     static = pipeline.static_state(PAPER_TIRE, "drum")
     sections = modal_sections(pipeline.fixed_hub_tire(PAPER_TIRE, "drum"))
-    quasi = run_cleat(sections, static, 0.1, distance=(-0.1, 0.15))
-    dynamic = run_cleat(sections, static, 30 / 3.6, distance=(-0.1, 0.6))
+    quasi = run_cleat(sections, static, speeds["quasi_static_kmh"] / 3.6, distance=(-0.1, 0.15))
+    dynamic = run_cleat(sections, static, speeds["dynamic_kmh"] / 3.6, distance=(-0.1, 0.6))
     return quasi, dynamic
 
 
@@ -100,34 +100,47 @@ def _corner_context():
 
 
 @functools.cache
-def _corner_spectra(texture: str, seed: int = 2002, speed: float = 120 / 3.6, duration: float = 10.0):
+def _corner_spectra(texture: str):
     from . import corner, textures
-    from .road import profile_input
+    from .road import texture_input
 
     _, static, _, model, sections = _corner_context()
-    strips = np.unique(static.tasselli.node_y)
-    field = textures.generate_field(textures.load_texture(texture), duration * speed + 5.0, 0.004, strips, seed=seed)
-    road = profile_input(static, field.as_3d(), speed, (0.0, duration * speed), sample_rate=10000, oversample=1)
-    run = corner.run_corner(sections, model, road)
-    return {out: corner.psd(run.outputs[out], run.sample_rate) for out in ("a_hub", "a_mount")}
+    test = load_conditions("road_test")
+    road = texture_input(
+        static,
+        textures.load_texture(texture),
+        test["speed_kmh"] / 3.6,
+        test["duration"],
+        test["seed"],
+        sample_rate=test["sample_rate"],
+    )
+    return corner.spectra(corner.run_corner(sections, model, road))
 
 
-def _low_share(spectrum: tuple[np.ndarray, np.ndarray], band: float = 250.0) -> float:
-    f, p = spectrum
-    return float(p[(f > 2) & (f < 50)].sum() / p[(f > 2) & (f <= band)].sum())
+def _hub_rms(texture: str) -> float:
+    from .corner import band_rms
+
+    return band_rms(_corner_spectra(texture)["a_hub"])
 
 
-def _transmissibility_stats() -> tuple[float, float, float]:
+def _low_share(spectrum: tuple[np.ndarray, np.ndarray]) -> float:
+    from .corner import power_share
+
+    return power_share(spectrum, 0.0, 50.0)
+
+
+def transmissibility_bands() -> dict:
+    """The paper's Fig. 10 claims as bands: ``claim id -> vehicle.FrequencyBand`` (Hz, statistic of |T|, label)."""
+    from .vehicle import FrequencyBand
+
+    return {c["id"]: FrequencyBand(*c["band"], c["statistic"], c["label"]) for c in load_claims() if "band" in c}
+
+
+@functools.cache
+def _transmissibility_stats() -> dict[str, float]:
     from . import vehicle
 
-    car = vehicle.load_vehicle(CAR)
-    f = np.linspace(1.0, 300.0, 600)
-    t = np.abs(vehicle.transmissibility(car, f))
-    return (
-        float(t[(f >= 20) & (f <= 120)].mean()),
-        float(t[(f >= 125) & (f <= 200)].mean()),
-        float(t[(f >= 200) & (f <= 250)].min()),
-    )
+    return vehicle.transmissibility_statistics(vehicle.load_vehicle(CAR), transmissibility_bands())
 
 
 # ---------------------------------------------------------------- one evaluator per claim
@@ -198,13 +211,14 @@ def _moving_hub() -> float:
 
     tire = "195_65R15"
     fet = pipeline.fet_model(tire)
+    hub = load_conditions("moving_hub_check")["hub"]
+    suspension = (hub["mass"], hub["stiffness"], hub["damping"])
     f = np.arange(2.0, 251.0, 4.0)
-    _, f_fe = movinghub.fe_moving_hub(fet, pipeline.static_state(tire), f, 32.0, 25e3, 3000.0)
-    rim_side = fet.hub_vertical_mass
+    _, f_fe = movinghub.fe_moving_hub(fet, pipeline.static_state(tire), f, *suspension)
     _, f_rm = movinghub.rm_moving_hub(
-        pipeline.tassello_fits(tire), pipeline.hub_fit(tire), f, 32.0 + rim_side, 25e3, 3000.0
+        pipeline.tassello_fits(tire), pipeline.hub_fit(tire), f, *suspension, tire_hub_mass=fet.hub_vertical_mass
     )
-    return float(np.linalg.norm(f_rm - f_fe) / np.linalg.norm(f_fe))
+    return relative_rms_error(f_rm, f_fe)
 
 
 def _resolution() -> float:
@@ -222,7 +236,8 @@ def _fig14_modes() -> float:
 
     _, static, fits, model, _ = _corner_context()
     f = np.arange(40.0, 221.0, 1.0)
-    psd = predicted_psd(f, fits.responses(f), static, load_texture("rough"), 120 / 3.6, model)["a_hub"]
+    speed = load_conditions("road_test")["speed_kmh"] / 3.6
+    psd = predicted_psd(f, fits.responses(f), static, load_texture("rough"), speed, model)["a_hub"]
     return float(resonance_peaks(f, np.sqrt(psd), min_ratio=0.0)[0].size)
 
 
@@ -246,14 +261,12 @@ EVALUATORS: dict[str, Callable[[], float]] = {
     "moving_hub": _moving_hub,
     "hub_poles": lambda: float(pipeline.hub_fit("195_65R15").n_poles),
     "resolution_5cm": _resolution,
-    "fig10_low": lambda: _transmissibility_stats()[0],
-    "fig10_mid": lambda: _transmissibility_stats()[1],
-    "fig10_high": lambda: _transmissibility_stats()[2],
+    "fig10_low": lambda: _transmissibility_stats()["fig10_low"],
+    "fig10_mid": lambda: _transmissibility_stats()["fig10_mid"],
+    "fig10_high": lambda: _transmissibility_stats()["fig10_high"],
     "fig11_low_frequency": lambda: _low_share(_corner_spectra("rough")["a_hub"]),
     "fig12_equalized": lambda: _low_share(_corner_spectra("rough")["a_mount"]),
-    "fig11_textures": lambda: float(
-        np.sqrt(_corner_spectra("rough")["a_hub"][1].sum() / _corner_spectra("smooth")["a_hub"][1].sum())
-    ),
+    "fig11_textures": lambda: _hub_rms("rough") / _hub_rms("smooth"),
     "fig14_modes": _fig14_modes,
 }
 

@@ -24,7 +24,7 @@ from .analysis import damped_components, force_peaks
 from .fet import FETModel
 from .frf import frf_visco
 from .road import BAND, RoadInput
-from .simulation import SimulationResult
+from .simulation import SimulationResult, simulate
 from .static import StaticState
 
 
@@ -108,7 +108,7 @@ def fe_cleat_response(
     the :func:`band_window` taper, summed and transformed back.
     """
     dt = road.dt
-    n = max(road.u.shape[1], int(round(duration / dt)))
+    n = _record_length(road, duration)
     freqs = np.fft.rfftfreq(n, dt)
     window = band_window(freqs, band)
     keep = window > 0
@@ -116,6 +116,23 @@ def fe_cleat_response(
     spectrum = np.zeros(freqs.size, complex)
     spectrum[keep] = np.sum(frf.H * np.fft.rfft(road.u, n, axis=1)[:, keep], axis=0) * window[keep]
     return np.fft.irfft(spectrum, n)[: road.u.shape[1]]
+
+
+def _record_length(road: RoadInput, duration: float) -> int:
+    """Samples of the record both methods see: the road's, padded to ``duration`` s for the decay."""
+    return max(road.u.shape[1], int(round(duration / road.dt)))
+
+
+def rm_cleat_response(system, road: RoadInput, band: float = BAND, duration: float = 1.0) -> np.ndarray:
+    """Hub force of ``road`` from the RM chain, on the same footing as :func:`fe_cleat_response`.
+
+    The tassello inputs are zero-padded to ``duration`` s and simulated (:func:`.simulate`)
+    from rest, so the free decay is complete before the record ends; the force is band-limited
+    by the same :func:`band_window` (zero phase) and cut back to the road's length. Filtering a
+    record cut short in mid-decay instead would smear the cut into the compared samples.
+    """
+    padded = road.padded(_record_length(road, duration))
+    return band_limited(simulate(system, padded).force, road.dt, band)[: road.u.shape[1]]
 
 
 def run_cleat(
@@ -136,7 +153,6 @@ def run_cleat(
     """
     from .conditions import load_conditions
     from .road import cleat_input
-    from .simulation import simulate
 
     cleat = load_conditions("cleat_test")["cleat"]
     base = cleat["base"] if base is None else base

@@ -8,18 +8,16 @@ between its ``<!-- notebook-table -->`` markers, ``--gallery`` the figure galler
 from __future__ import annotations
 
 import csv
-import tomllib
 from pathlib import Path
 
 import pandas as pd
 
-from .paths import data_dir, figure_dir
+from .paths import data_dir, figure_dir, read_toml
 
 
 def notebooks() -> list[dict[str, str]]:
     """The notebooks in reading order, with title, paper section, figures and status."""
-    with open(data_dir() / "collection.toml", "rb") as fh:
-        return tomllib.load(fh)["notebook"]
+    return read_toml(data_dir() / "collection.toml")["notebook"]
 
 
 def notebook_table(link_prefix: str = "notebooks/") -> pd.DataFrame:

@@ -86,6 +86,53 @@ def psd(
     return welch(signal[start:], fs=sample_rate, window="hann", nperseg=nperseg, noverlap=nperseg // 2, detrend=False)
 
 
+def spectra(
+    run: CornerRun, outputs: tuple[str, ...] = ("a_hub", "a_mount")
+) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """Welch PSD (:func:`psd`) of some outputs of a run: ``name -> (freqs Hz, PSD)``."""
+    return {name: psd(run.outputs[name], run.sample_rate) for name in outputs}
+
+
+def _in_band(freqs: np.ndarray, band: tuple[float, float]) -> np.ndarray:
+    return (freqs > band[0]) & (freqs <= band[1])
+
+
+def power_share(
+    spectrum: tuple[np.ndarray, np.ndarray], f_low: float, f_high: float, band: tuple[float, float] = (2.0, 250.0)
+) -> float:
+    """Share of the power in ``band`` (Hz, lower edge excluded) lying in ``[f_low, f_high)`` Hz."""
+    f, p = spectrum
+    inside = _in_band(f, band)
+    return float(p[inside & (f >= f_low) & (f < f_high)].sum() / p[inside].sum())
+
+
+def band_rms(spectrum: tuple[np.ndarray, np.ndarray], band: tuple[float, float] = (2.0, 250.0)) -> float:
+    """RMS of a signal in ``band`` (Hz) from its PSD (square root of the integrated PSD)."""
+    f, p = spectrum
+    inside = _in_band(f, band)
+    return float(np.sqrt(np.trapezoid(p[inside], f[inside])))
+
+
+def band_power_ratios(
+    spectrum: tuple[np.ndarray, np.ndarray],
+    predicted_freqs: np.ndarray,
+    predicted: np.ndarray,
+    bands: list[tuple[float, float]],
+) -> np.ndarray:
+    """Power of a measured (Welch) spectrum over the power of a predicted PSD, band by band.
+
+    Both are integrated as sums times their (uniform) frequency steps over ``[f_low, f_high)``.
+    """
+    f, p = spectrum
+    fc = np.asarray(predicted_freqs, float)
+    ratios = []
+    for lo, hi in bands:
+        measured = p[(f >= lo) & (f < hi)].sum() * (f[1] - f[0])
+        expected = predicted[(fc >= lo) & (fc < hi)].sum() * (fc[1] - fc[0])
+        ratios.append(measured / expected)
+    return np.array(ratios)
+
+
 def kernel_transforms(static: StaticState, wavenumbers: np.ndarray, step: float = 2.0e-4) -> np.ndarray:
     """:math:`K_i(n) = \\int k_i(x) e^{i 2\\pi n x} dx` for every tassello (rows) and wavenumber (cycles/m)."""
     kernels, x0 = tassello_kernels(static.tasselli, step)

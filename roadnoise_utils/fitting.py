@@ -29,6 +29,8 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from .analysis import relative_rms_error
+
 
 @dataclass(frozen=True)
 class RationalFit:
@@ -337,7 +339,7 @@ def _fit_many(
                 poles=p * scale,
                 residues=r * scale,
                 direct=d,
-                rms_error=float(np.linalg.norm(fitted - frf[i]) / np.linalg.norm(frf[i])),
+                rms_error=relative_rms_error(fitted, frf[i]),
                 max_error=float(np.max(np.abs(fitted - frf[i])) / np.max(np.abs(frf[i]))),
                 dc_error=float(dc_error),
                 iterations=int(used[i]),

@@ -70,8 +70,7 @@ def fe_moving_hub(
     lt = loaded_tire(fet, static)
     solver = HubForceSolver(lt)
     basis = solver.basis_matrix
-    hub_dof = fet.mesh.hub_dofs[1]
-    own_mass = float(fet.M[hub_dof, hub_dof])
+    own_mass = fet.hub_vertical_mass
     footprint = np.asarray(lt.road_input.sum(axis=1)).ravel()
     u_hub = np.empty(len(freqs), complex)
     f_hub = np.empty(len(freqs), complex)
@@ -92,15 +91,24 @@ def fe_moving_hub(
 
 
 def rm_moving_hub(
-    fits: FitSet, hub: FitSet, freqs: np.ndarray, hub_mass: float, stiffness: float, damping: float
+    fits: FitSet,
+    hub: FitSet,
+    freqs: np.ndarray,
+    hub_mass: float,
+    stiffness: float,
+    damping: float,
+    tire_hub_mass: float,
 ) -> tuple[np.ndarray, np.ndarray]:
     """The same as :func:`fe_moving_hub` from the fitted RM model (Eq. 5-7).
 
-    ``hub_mass`` must include the FE's rim-side mass, which :math:`G_H` leaves out.
+    ``hub_mass``, ``stiffness`` and ``damping`` mean what they mean there; ``tire_hub_mass``
+    (kg) is the FE tire's rim-side mass (:attr:`.FETModel.hub_vertical_mass`), which
+    :math:`G_H` leaves out and the FE model carries itself.
     """
     f = np.asarray(freqs, float)
     w = 2 * np.pi * f
     fixed = fits.responses(f).sum(axis=0)  # F_F per unit displacement of the whole footprint
     g_h = hub[0](f)
-    u_hub = fixed / (-(w**2) * hub_mass + stiffness + 1j * w * damping - g_h)
+    mass = hub_mass + tire_hub_mass
+    u_hub = fixed / (-(w**2) * mass + stiffness + 1j * w * damping - g_h)
     return u_hub, fixed + g_h * u_hub

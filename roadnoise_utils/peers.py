@@ -12,6 +12,8 @@ import warnings
 import numpy as np
 import pandas as pd
 
+from .analysis import relative_rms_error
+
 
 def skrf_vector_fit(freqs: np.ndarray, H: np.ndarray, n_poles: int, f_max: float = 250.0) -> tuple[np.ndarray, float]:
     """Fit each row of ``H`` with scikit-rf's ``VectorFitting`` (relaxed VF, Gustavsen 2006).
@@ -39,7 +41,7 @@ def skrf_vector_fit(freqs: np.ndarray, H: np.ndarray, n_poles: int, f_max: float
                     n_poles_real=n_poles % 2, n_poles_cmplx=n_poles // 2, fit_constant=True, fit_proportional=False
                 )
                 model = vf.get_model_response(0, 0, freqs=f) * scale
-                errors.append(np.linalg.norm(model - row) / np.linalg.norm(row))
+                errors.append(relative_rms_error(model, row))
     finally:
         logging.disable(logging.NOTSET)
     return np.array(errors), time.perf_counter() - start

@@ -198,17 +198,32 @@ def fixed_hub_tire(tire: str | TireSpec, road: str = "flat", n_poles: int | None
     return assemble_fixed_hub(tassello_fits(tire, road, n_poles))
 
 
-def cleat_fe(tire: str | TireSpec, speed: float, duration: float = 1.0) -> tuple:
-    """Cached FE frequency-domain cleat response on the drum: ``(road, force)``, force band-limited to 250 Hz."""
+def cleat_fe(
+    tire: str | TireSpec,
+    speed: float,
+    height: float | None = None,
+    base: float | None = None,
+    duration: float = 1.0,
+) -> tuple:
+    """Cached FE frequency-domain cleat response on the drum: ``(road, force)``, force band-limited to 250 Hz.
+
+    The cleat defaults to the paper's (``data/conditions/cleat_test.toml``).
+    """
     from .cleat import fe_cleat_response
     from .road import cleat_input
 
     spec = tire_spec(tire)
-    inputs = {**_road_inputs(spec, "drum", None, None), "speed": float(speed), "duration": float(duration)}
+    inputs = {
+        **_road_inputs(spec, "drum", None, None),
+        "speed": float(speed),
+        "height": height,
+        "base": base,
+        "duration": float(duration),
+    }
     static = static_state(spec, "drum")
 
     def compute():
-        road = cleat_input(static, speed)
+        road = cleat_input(static, speed, height=height, base=base)
         return road, fe_cleat_response(build_fet(spec), static, road, duration=duration)
 
     return cached("cleat_fe", inputs, compute)

@@ -519,6 +519,23 @@ def plot_tassello_inputs(road, static: StaticState, rows: list[int], ax: plt.Axe
     return ax
 
 
+def plot_row_inputs(roads: dict, static: StaticState, row: int = 0, samples: int = 1000) -> plt.Figure:
+    """Displacement histories of every tassello of one row, one panel per road (``title -> RoadInput``).
+
+    On a 2D road every column of the row sees the same track (the curves differ only by the
+    tasselli's positions along the road); on a 3D road each column has its own.
+    """
+    members = np.nonzero(static.tasselli.row == row)[0]
+    fig, axes = plt.subplots(1, len(roads), figsize=(6 * len(roads), 3.5), sharey=True, squeeze=False)
+    for ax, (title, road) in zip(axes[0], roads.items(), strict=True):
+        for i in members:
+            ax.plot(road.t[:samples] * 1e3, road.u[i, :samples] * MM, lw=0.8)
+        ax.set_title(f"{title} (row {row + 1})")
+        ax.set_xlabel("time (ms)")
+    axes[0, 0].set_ylabel("tassello displacement (mm)")
+    return fig
+
+
 def plot_row_influence(rows: pd.DataFrame, static: StaticState, base: float, ax: plt.Axes | None = None) -> plt.Axes:
     """Static influence of each row along the footprint, with the cleat drawn at the two peak positions."""
     if ax is None:
@@ -613,21 +630,15 @@ def plot_road_spectra(
 
 
 def plot_transmissibility(
-    freqs: np.ndarray, transmissibility: np.ndarray, criteria: dict, ax: plt.Axes | None = None
+    freqs: np.ndarray, transmissibility: np.ndarray, bands: dict, ax: plt.Axes | None = None
 ) -> plt.Axes:
-    """Fig. 10 analogue: |a_mount / a_hub| with the paper's three bands shaded."""
+    """Fig. 10 analogue: |a_mount / a_hub| with the paper's bands (``vehicle.FrequencyBand``) shaded."""
     if ax is None:
         _, ax = plt.subplots(figsize=(8, 4))
     ax.plot(freqs, np.abs(transmissibility), "k", lw=1.8, label="quarter car (ours)")
-    bands = [
-        ("low_band", "tab:blue", "≈90 % filtered"),
-        ("mid_band", "tab:green", "almost unaltered"),
-        ("high_band", "tab:orange", "≤ 40 % filtered"),
-    ]
-    for key, colour, text in bands:
-        lo, hi = criteria[key]
-        ax.axvspan(lo, hi, color=colour, alpha=0.12)
-        ax.text(0.5 * (lo + hi), 1.9, text, ha="center", fontsize=8, color=colour)
+    for band, colour in zip(bands.values(), ["tab:blue", "tab:green", "tab:orange", "tab:purple"], strict=False):
+        ax.axvspan(band.f_low, band.f_high, color=colour, alpha=0.12)
+        ax.text(0.5 * (band.f_low + band.f_high), 1.9, band.label, ha="center", fontsize=8, color=colour)
     ax.axhline(1.0, color="0.5", lw=0.7, ls=":")
     ax.set_ylim(0, 2.1)
     ax.set_xlim(0, 300)

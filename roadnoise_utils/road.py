@@ -29,6 +29,7 @@ import numpy as np
 
 from .static import StaticState
 from .tasselli import Tasselli
+from .textures import RoadSpectrum, generate_field, generate_profile
 
 #: Simulation band of the RM model (Hz), paper abstract: "0-250 Hz".
 BAND = 250.0
@@ -75,6 +76,29 @@ class RoadInput:
     def sample_rate(self) -> float:
         """Samples per second (Hz)."""
         return 1.0 / self.dt
+
+    def excerpt(self, start: int, stop: int) -> RoadInput:
+        """Samples ``start`` to ``stop`` (clipped to the record), the time restarting at 0."""
+        part = slice(start, min(stop, self.t.size))
+        return RoadInput(
+            t=self.t[part] - self.t[start],
+            distance=self.distance[part],
+            u=self.u[:, part],
+            speed=self.speed,
+            description=f"{self.description}, samples {start}-{part.stop}",
+        )
+
+    def padded(self, n_samples: int) -> RoadInput:
+        """The record extended with zero displacement to ``n_samples`` samples (the road beyond is flat)."""
+        extra = max(0, n_samples - self.t.size)
+        t = self.dt * np.arange(self.t.size + extra)
+        return RoadInput(
+            t=t,
+            distance=self.distance[0] + self.speed * t,
+            u=np.pad(self.u, ((0, 0), (0, extra))),
+            speed=self.speed,
+            description=f"{self.description}, zero-padded to {t.size} samples",
+        )
 
 
 def sample_rate_for(speed: float, band: float = BAND) -> float:
@@ -306,4 +330,62 @@ def cleat_input(
         distance,
         sample_rate,
         description=f"{shape} cleat {base * 1e3:.0f} mm x {height * 1e3:.0f} mm at {speed * 3.6:.1f} km/h",
+    )
+
+
+#: Road generated beyond the travel (m): the footprint's leading edge runs ahead of the axle.
+ROAD_MARGIN = 5.0
+
+
+def contact_tracks(static: StaticState) -> np.ndarray:
+    """Lateral positions (m) of the belt strips in contact: where a 3D road needs its tracks."""
+    centres = _strip_centres(static)
+    return np.unique(centres[np.isfinite(centres)])
+
+
+def texture_input(
+    static: StaticState,
+    spectrum: RoadSpectrum,
+    speed: float,
+    duration: float,
+    seed: int,
+    lateral: bool = True,
+    sample_rate: float | None = None,
+    step: float = 0.004,
+) -> RoadInput:
+    """Tassello displacements for ``duration`` s on a generated road of PSD ``spectrum``.
+
+    Parameters
+    ----------
+    static : StaticState
+        The loaded tire.
+    spectrum : RoadSpectrum
+        The road's displacement PSD (:mod:`.textures`).
+    speed : float
+        Rolling speed (m/s), > 0.
+    duration : float
+        Simulated time (s), > 0.
+    seed : int
+        Seed of the random phases: the same seed gives the same road.
+    lateral : bool
+        ``True``: a laterally varying 3D road, one coherent track per belt strip in contact
+        (:func:`.textures.generate_field`); ``False``: a 2D road uniform across the width.
+    sample_rate : float, optional
+        Samples per second; default :func:`sample_rate_for`.
+    step : float
+        Road grid of the generated profile (m), at most a fifth of the shortest wavelength.
+    """
+    if not (np.isfinite(duration) and duration > 0):
+        raise ValueError(f"duration = {duration} s: valid range is (0, inf) s")
+    if not (np.isfinite(speed) and speed > 0):
+        raise ValueError(f"speed = {speed} m/s: valid range is (0, inf) m/s")
+    travel = duration * speed
+    length = travel + ROAD_MARGIN
+    if lateral:
+        road = generate_field(spectrum, length, step, contact_tracks(static), seed=seed).as_3d()
+    else:
+        road = generate_profile(spectrum, length, step, seed=seed).as_2d()
+    description = f"{spectrum.name} ({'3D' if lateral else '2D'}, seed {seed})"
+    return profile_input(
+        static, road, speed, (0.0, travel), sample_rate=sample_rate, oversample=1, description=description
     )

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
+from typing import NamedTuple
 
 import control
 import numpy as np
@@ -203,6 +204,50 @@ def transmissibility(vehicle: QuarterCar, freqs: np.ndarray) -> np.ndarray:
     """Upper-mount over hub acceleration, :math:`a_{mount}/a_{hub}` (paper Fig. 10), complex."""
     response = vehicle_statespace(vehicle)(2j * np.pi * np.asarray(freqs, float))
     return response[2, 0] / response[1, 0]
+
+
+#: Statistics of :math:`|T|` over a band that :func:`transmissibility_statistics` knows.
+STATISTICS = {"mean": np.mean, "min": np.min, "max": np.max}
+
+
+class FrequencyBand(NamedTuple):
+    """A frequency band (Hz), the statistic of :math:`|T|` taken over it, and a label for plots."""
+
+    f_low: float
+    f_high: float
+    statistic: str
+    label: str = ""
+
+
+def transmissibility_statistics(
+    vehicle: QuarterCar, bands: dict[str, FrequencyBand], points: int = 501
+) -> dict[str, float]:
+    """A statistic of :math:`|T|` (:func:`transmissibility`) over each of some frequency bands.
+
+    Parameters
+    ----------
+    vehicle : QuarterCar
+        The corner.
+    bands : dict of str to FrequencyBand
+        The bands; the statistic is one of :data:`STATISTICS` (the paper's Fig. 10 claims:
+        :func:`.claims.transmissibility_bands`).
+    points : int
+        Uniform frequency samples per band.
+
+    Returns
+    -------
+    dict of str to float
+        The statistic of each band (-).
+    """
+    values = {}
+    for name, band in bands.items():
+        if band.statistic not in STATISTICS:
+            raise ValueError(f"band {name!r}: statistic = {band.statistic!r}: valid values are {list(STATISTICS)}")
+        if not 0 <= band.f_low < band.f_high:
+            raise ValueError(f"band {name!r}: ({band.f_low}, {band.f_high}) Hz: valid bands have 0 <= f_low < f_high")
+        magnitude = np.abs(transmissibility(vehicle, np.linspace(band.f_low, band.f_high, points)))
+        values[name] = float(STATISTICS[band.statistic](magnitude))
+    return values
 
 
 def two_mass_transmissibility(

@@ -98,6 +98,30 @@ def test_two_peaks_and_decay_at_the_first_vertical_mode(drum_tire):
     assert dynamic.decay["frequency (Hz)"].iloc[0] == pytest.approx(80.0, abs=4.0)
 
 
+@pytest.mark.parametrize("speed_kmh", [30.0, 60.0])
+def test_rm_chain_matches_the_fe_model(drum_tire, tire, speed_kmh):
+    """Second method (issue 5, item 4): fitted state space in time vs direct FE FRFs in frequency.
+
+    Both see the same record and band; what separates them is the fits (<= 0.3 % per tassello)
+    and the first-order hold, so 1 % bounds both the peak and the RMS difference.
+    """
+    _, _, sections = drum_tire
+    road, fe_force = ru.pipeline.cleat_fe(tire, speed_kmh / 3.6)
+    rm_force = cleat.rm_cleat_response(sections, road)
+    assert abs(rm_force.max() / fe_force.max() - 1) < 0.01
+    assert ru.analysis.relative_rms_error(rm_force, fe_force) < 0.01
+
+
+def test_road_input_excerpt_and_padding(drum_tire):
+    static, _, _ = drum_tire
+    road = ru.cleat_input(static, 30 / 3.6)
+    part = road.excerpt(10, 10_000)
+    assert part.t[0] == 0.0 and part.t.size == road.t.size - 10 and np.array_equal(part.u, road.u[:, 10:])
+    long = road.padded(road.t.size + 50)
+    assert np.array_equal(long.u[:, : road.t.size], road.u) and not long.u[:, road.t.size :].any()
+    assert np.allclose(np.diff(long.distance), road.speed * road.dt) and long.distance[0] == road.distance[0]
+
+
 def test_road_kernels_average_correctly(flat):
     """A constant road lifts every tassello by the same amount; a ramp by its height at the centre."""
     const = profile_input(flat, lambda s: np.full_like(s, 2e-3), 5.0, (0.0, 0.01))

@@ -73,6 +73,15 @@ def test_every_notebook_has_a_parameters_cell(notebook):
     assert len(tagged) == 1 and tagged[0].cell_type == "code"
 
 
+def test_parameters_left_at_none_take_the_papers_test():
+    """A notebook parameter at None takes the conditions file's value; a given value wins."""
+    cleat = ru.conditions.load_conditions("cleat_test")["cleat"]
+    filled = ru.conditions.with_defaults("cleat_test", "cleat", height=None, base=0.03)
+    assert filled == {"height": cleat["height"], "base": 0.03}
+    with pytest.raises(KeyError, match="no value for \\['colour'\\]"):
+        ru.conditions.with_defaults("cleat_test", "cleat", colour=None)
+
+
 def test_readme_gallery_is_generated_and_every_figure_exists():
     block = re.search(r"<!-- gallery -->\n(.*?)\n<!-- /gallery -->", README, re.S)
     assert block and block.group(1).strip() == collection.gallery_markdown().strip()
