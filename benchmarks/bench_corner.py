@@ -19,25 +19,21 @@ import control
 import numpy as np
 
 import roadnoise_utils as ru
-from roadnoise_utils import corner, textures, vehicle
+from roadnoise_utils import textures
 from roadnoise_utils.road import contact_tracks, profile_input
-from roadnoise_utils.simulation import modal_sections
+from roadnoise_utils.vehicle import corner, quarter_car, spectra
 
 
 def main() -> None:
-    road_test = ru.conditions.load_conditions("road_test")
+    road_test = ru.experiments.road_test_conditions()
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--vehicle", default="midsize_195_65R15")
-    parser.add_argument("--speed-kmh", type=float, default=road_test["speed_kmh"])
-    parser.add_argument("--duration", type=float, default=road_test["duration"])
+    parser.add_argument("--vehicle", default=ru.experiments.corner.PAPER_CAR)
+    parser.add_argument("--speed-kmh", type=float, default=road_test.speed_kmh)
+    parser.add_argument("--duration", type=float, default=road_test.duration)
     args = parser.parse_args()
-    car = vehicle.load_vehicle(args.vehicle)
-    tire = ru.load_tire(car.tire)
-    fet = ru.build_fet(tire)
-    static = ru.pipeline.static_state(tire)
-    fits = ru.pipeline.tassello_fits(tire)
-    hub = ru.pipeline.hub_fit(tire)
-    rim_side = fet.hub_vertical_mass
+    setup = ru.experiments.corner_setup(args.vehicle)
+    car, tire, static, fits, hub = setup.vehicle, setup.tire, setup.static, setup.fits, setup.hub
+    rim_side = setup.tire_hub_mass
     speed = args.speed_kmh / 3.6
     length = args.duration * speed
     spectrum = textures.load_texture("rough")
@@ -50,7 +46,7 @@ def main() -> None:
     for kind in ("2D", "3D"):
         t0 = time.perf_counter()
         model = corner.corner_model(car, hub, rim_side)
-        sections = modal_sections(ru.assemble_fixed_hub(fits))
+        sections = ru.rm.modal_sections(ru.assemble_fixed_hub(fits))
         if kind == "2D":
             profile = textures.generate_profile(spectrum, length + 5.0, 0.004, seed=1).as_2d()
         else:
@@ -60,13 +56,13 @@ def main() -> None:
         t2 = time.perf_counter()
         force = ru.simulate(sections, road).force
         t3 = time.perf_counter()
-        outputs = ru.simulation.response(model, road.t, force[None, :])
-        _ = [corner.psd(y, road.sample_rate) for y in outputs[1:]]
+        outputs = ru.rm.response(model, road.t, force[None, :])
+        _ = [spectra.psd(y, road.sample_rate) for y in outputs[1:]]
         t4 = time.perf_counter()
         print(f"| {kind} | {t1 - t0:.2f} | {t2 - t1:.2f} | {t3 - t2:.2f} | {t4 - t3:.2f} | {t4 - t0:.2f} | < 2 |")
     # the full Eq. 8 state vector (moving-hub tire + car) with python-control, first second only
-    tire_m = ru.movinghub.assemble_moving_hub(fits, hub)
-    car_ss = vehicle.vehicle_statespace(vehicle.with_extra_hub_mass(car, rim_side))
+    tire_m = ru.rm.assemble_moving_hub(fits, hub)
+    car_ss = quarter_car.vehicle_statespace(quarter_car.with_extra_hub_mass(car, rim_side))
     n_tasselli = len(fits)
     full = control.interconnect(
         [
@@ -81,7 +77,7 @@ def main() -> None:
     ref = control.forced_response(full, T=road.t[:n], U=road.u[:, :n]).outputs
     t_full = time.perf_counter() - t0
     t0 = time.perf_counter()
-    ours = ru.simulation.response(
+    ours = ru.rm.response(
         model,
         road.t[:n],
         ru.simulate(sections, road.excerpt(0, n)).force[None, :],

@@ -23,8 +23,8 @@ def main() -> None:
     parser.add_argument("--repeat", type=int, default=3)
     args = parser.parse_args()
     tire = ru.load_tire(args.tire)
-    visco = ru.pipeline.visco_frf(tire, progress=False)
-    order = ru.pipeline.tassello_fits(tire).n_poles
+    visco = ru.stages.frf_visco(tire)
+    order = ru.stages.fit_tasselli(tire).n_poles
     n = visco.H.shape[0]
     print(f"tire {tire.name}: {n} tassello FRFs, 0-250 Hz at 1 Hz")
     print("| poles | method | max rms error | median rms error | time for all fits (s) | goal |")
@@ -35,7 +35,7 @@ def main() -> None:
             key=lambda fits: fits.seconds,
         )
         peer = min(
-            (ru.peers.skrf_vector_fit(visco.freqs, visco.H, poles) for _ in range(args.repeat)),
+            (ru.rm.fitting_peer.skrf_vector_fit(visco.freqs, visco.H, poles) for _ in range(args.repeat)),
             key=lambda result: result[1],
         )
         goal = "<= 0.2" if poles == order else "-"

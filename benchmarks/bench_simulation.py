@@ -20,7 +20,6 @@ import control
 import numpy as np
 
 import roadnoise_utils as ru
-from roadnoise_utils.simulation import modal_sections
 
 
 def timed(fn, *args, **kwargs):
@@ -30,7 +29,7 @@ def timed(fn, *args, **kwargs):
 
 
 def ours(system, road):
-    return ru.simulate(modal_sections(system), road).force
+    return ru.simulate(ru.rm.modal_sections(system), road).force
 
 
 def reference(system, t, u):
@@ -43,12 +42,12 @@ def main() -> None:
     parser.add_argument("--steps", type=int, default=200_000)
     args = parser.parse_args()
     tire = ru.load_tire(args.tire)
-    visco = ru.pipeline.visco_frf(tire, progress=False)
+    visco = ru.stages.frf_visco(tire)
     rng = np.random.default_rng(0)
     print(f"tire {tire.name}, {args.steps} steps at 10 kHz, random inputs")
     print("| model | states | ours (s) | python-control forced_response (s) | speed-up | max rel. difference |")
     print("|---|---|---|---|---|---|")
-    for poles in (8, ru.pipeline.tassello_fits(tire).n_poles):
+    for poles in (8, ru.stages.fit_tasselli(tire).n_poles):
         system = ru.assemble_fixed_hub(ru.fit_tasselli(visco.freqs, visco.H, n_poles=poles))
         t = np.arange(args.steps) / 10_000.0
         u = 1e-3 * rng.standard_normal((system.ninputs, args.steps))

@@ -6,6 +6,7 @@
 #       extension: .py
 #       format_name: percent
 #       format_version: '1.3'
+#       jupytext_version: 1.19.6
 #   kernelspec:
 #     display_name: Python 3 (ipykernel)
 #     language: python
@@ -35,14 +36,14 @@
 #    smooth textures (Fig. 10-14).
 #
 # Each stage is a notebook; all logic lives in the `roadnoise_utils` package and every number
-# is computed. Each notebook runs alone: earlier stages come from a cache keyed by their inputs.
+# is computed. Each notebook runs alone: earlier stages come from a cache keyed by their inputs
+# and by the code they run.
 
 # %%
 import matplotlib.pyplot as plt
 from IPython.display import Markdown
 
 import roadnoise_utils as ru
-from roadnoise_utils import collection, plotting
 
 ru.set_style()
 
@@ -52,7 +53,7 @@ claim_ids = None
 
 # %%
 # Fig. 1 analogue: the RM pipeline and the notebook of each stage
-plotting.plot_rm_pipeline()
+ru.figures.overview.plot_rm_pipeline(ru.collection.stages())
 plt.show()
 
 # %% [markdown]
@@ -63,7 +64,7 @@ plt.show()
 
 # %%
 # The notebooks, the paper section and figures each reproduces
-Markdown(collection.markdown_table(link_prefix=""))
+Markdown(ru.collection.markdown_table(link_prefix=""))
 
 # %% [markdown]
 # ## The reproduction report
@@ -72,7 +73,7 @@ Markdown(collection.markdown_table(link_prefix=""))
 # (on a fresh checkout this runs every stage once, about a minute; later the stage cache
 # answers). The claims, the paper's values with their section or figure, and the tolerances
 # are in `data/paper/claims.toml`; a claim we do not reproduce carries the reason. The
-# reproduction command (`python -m roadnoise_utils.reproduce`) writes the same table to
+# reproduction command (`python -m roadnoise_utils`) writes the same table to
 # `figures/reproduction-report.md` and `.csv`.
 
 # %%
@@ -96,7 +97,7 @@ Markdown(
 )
 
 # %% [markdown]
-# ## Public entry points
+# ## Public entry points and where the code lives
 #
 # ```python
 # import roadnoise_utils as ru
@@ -104,10 +105,18 @@ Markdown(
 # fet    = ru.build_fet(tire)                   # FETModel: sparse M, K(ω) parts, DOF maps
 # static = ru.solve_static(fet, road="flat")    # or road="drum": footprint, pressures, tasselli
 # visco  = ru.frf_visco(fet, static, freqs)     # direct FRFs: H_tot, H_i, G_H (fixed hub)
+# test   = ru.experiments.cleat_test("165_65R14")  # the paper's cleat test, conditions resolved once
 # ```
 #
-# The cached versions used by the notebooks are in `roadnoise_utils.pipeline`
-# (`static_state`, `visco_frf`, `modes`).
+# The package has one folder per stage, in the order the data flows: `tire/` (spec, the ring
+# FE model, statics, tasselli) → `response/` (direct FRFs, modes, modal reduction, FE reference
+# solves) → `rm/` (fits, state space, simulation) → `road/` (tassello inputs) → `vehicle/`
+# (quarter car, corner, spectra); `experiments/` runs the paper's tests from their
+# `data/conditions` files, `figures/` holds one module per notebook, `repro/` the cache, the
+# claims and the reproduce command. The notebooks get earlier stages from `ru.stages`, whose
+# functions carry the names of the stage functions they cache (`ru.stages.solve_static`,
+# `ru.stages.frf_visco`, `ru.stages.fit_tasselli`, ...) and take a tire name instead of the
+# earlier results.
 
 # %%
 # NBVAL_CHECK_OUTPUT

@@ -6,6 +6,7 @@
 #       extension: .py
 #       format_name: percent
 #       format_version: '1.3'
+#       jupytext_version: 1.19.6
 #   kernelspec:
 #     display_name: Python 3 (ipykernel)
 #     language: python
@@ -44,7 +45,6 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import roadnoise_utils as ru
-from roadnoise_utils import pipeline, plotting
 
 ru.set_style()
 
@@ -64,7 +64,7 @@ n_modes = 60
 # %%
 # Load and validate the tire; show every parameter with its unit and valid range
 tire = ru.load_tire(tire_name)
-ru.tire_spec.tire_table(tire)
+ru.tire.tire_table(tire)
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -87,13 +87,13 @@ print(f"meridional crown tension = {tire.lateral_tension:.0f} N/m")
 # %%
 # Storage-modulus rise and loss factor of each compound
 fet = ru.build_fet(tire)
-plotting.plot_compounds(fet.laws)
+ru.figures.fe_tire_model.plot_compounds(fet.laws)
 plt.show()
 
 # %%
 # NBVAL_CHECK_OUTPUT
 # Storage rise 1 -> 250 Hz and loss factor of each compound (DESIGN: +10-40 %, 0.05-0.25)
-compounds = ru.viscoelastic.compound_table(fet.laws)
+compounds = ru.tire.compound_table(fet.laws)
 print(compounds.to_string(float_format=lambda v: f"{v:.3f}"))
 
 # %% [markdown]
@@ -114,7 +114,7 @@ print(f"mass matrix nnz {fet.M.nnz}, stiffness nnz {fet.K(0).nnz}")
 
 # %%
 # Fig. 3 analogue: the FET mesh
-plotting.plot_fet_mesh(fet)
+ru.figures.fe_tire_model.plot_fet_mesh(fet)
 plt.show()
 
 # %% [markdown]
@@ -144,13 +144,13 @@ assert worst.loc[:6].max() < 0.01 and worst.max() < 1e-3
 
 # %%
 # Ring frequencies: closed form vs FE, n = 0..8
-plotting.plot_ring_check(ring)
+ru.figures.fe_tire_model.plot_ring_check(ring)
 plt.show()
 
 # %%
 # NBVAL_CHECK_OUTPUT
 # Convergence with the mesh: relative error for 60 ... 480 elements
-conv = ru.ring.ring_convergence(tire, meshes=(30, 60, 120, 300))
+conv = ru.tire.ring_convergence(tire, meshes=(30, 60, 120, 300))
 print(conv.to_string(float_format=lambda v: f"{v:+.2e}"))
 
 # %% [markdown]
@@ -167,14 +167,15 @@ print(conv.to_string(float_format=lambda v: f"{v:+.2e}"))
 # influence matrix), so each active-set iteration is a small dense solve.
 
 # %%
-# Loaded on the flat road and on the 1.25 m drum of the cleat tests (cached stage results)
-flat = pipeline.static_state(tire, road="flat")
-drum = pipeline.static_state(tire, road="drum")
+# Loaded on the flat road and on the drum of the cleat test (cached stage results)
+drum_radius = ru.experiments.cleat_conditions().drum_radius  # data/conditions/cleat_test.toml
+flat = ru.stages.solve_static(tire, road="flat")
+drum = ru.stages.solve_static(tire, road="drum", drum_radius=drum_radius)
 
 # %%
 # NBVAL_CHECK_OUTPUT
 # Key numbers of both static states; the force balance is exact to round-off
-summary = ru.static.static_summary({"flat road": flat, "drum R = 1.25 m": drum})
+summary = ru.tire.static_summary({"flat road": flat, f"drum R = {drum_radius:.2f} m": drum})
 print(summary.to_string(float_format=lambda v: f"{v:.4g}"))
 
 # %%
@@ -185,7 +186,7 @@ for st in (flat, drum):
 
 # %%
 # The loaded shape of the belt at true scale
-plotting.plot_loaded_shape(fet, {"flat road": flat, "drum R = 1.25 m": drum})
+ru.figures.fe_tire_model.plot_loaded_shape(fet, {"flat road": flat, f"drum R = {drum_radius:.2f} m": drum})
 plt.show()
 
 # %% [markdown]
@@ -202,7 +203,7 @@ plt.show()
 # Load-deflection curve on the flat road, 0.2 to 1.5 times the nominal load
 loads = tire.operating.vertical_load * np.linspace(0.2, 1.5, 14)
 deflections = ru.load_deflection(fet, loads, road="flat")
-plotting.plot_load_deflection(loads, deflections, flat)
+ru.figures.fe_tire_model.plot_load_deflection(loads, deflections, flat)
 plt.show()
 
 # %% [markdown]
@@ -217,10 +218,10 @@ plt.show()
 # %%
 # Fig. 2 analogue: contact pressure, tassello outlines, centres (white dots) and numbers
 fig, axes = plt.subplots(1, 2, figsize=(12, 5))
-plotting.plot_footprint(flat, axes[0])
+ru.figures.fe_tire_model.plot_footprint(flat, axes[0])
 axes[0].set_title(f"flat road: {flat.tasselli.n} tasselli")
-plotting.plot_footprint(drum, axes[1])
-axes[1].set_title(f"drum R = 1.25 m: {drum.tasselli.n} tasselli")
+ru.figures.fe_tire_model.plot_footprint(drum, axes[1])
+axes[1].set_title(f"drum R = {drum_radius:.2f} m: {drum.tasselli.n} tasselli")
 fig.suptitle("Fig. 2 analogue: subdivision of the footprint into tasselli")
 plt.show()
 
@@ -254,8 +255,8 @@ print(f"tassello 1 (leading edge) {ramp[0] * 1e3:+.2f} mm, tassello {t.n} (trail
 
 # %%
 # Modes of the loaded tire (cached), frequency chart by wave number and symmetry class
-modes = pipeline.modes(tire, road="flat", n_modes=n_modes)
-plotting.plot_mode_chart(modes, f_max=300)
+modes = ru.stages.loaded_modes(tire, road="flat", n_modes=n_modes)
+ru.figures.fe_tire_model.plot_mode_chart(modes, f_max=300)
 plt.show()
 
 # %%
@@ -267,7 +268,7 @@ print(table[table["class"] == "vertical"].to_string(float_format=lambda v: f"{v:
 # %%
 # Shapes of the first modes and of every vertical mode below 300 Hz
 vertical = [r for r in range(len(modes.freqs)) if modes.vertical[r] and modes.freqs[r] <= 300]
-plotting.plot_modes(fet, modes, [0, 2, 4, 8, *vertical[:4]])
+ru.figures.fe_tire_model.plot_modes(fet, modes, [0, 2, 4, 8, *vertical[:4]])
 plt.show()
 
 # %% [markdown]
@@ -281,16 +282,17 @@ plt.show()
 
 # %%
 # The whole-footprint-to-hub FRF of the viscoelastic model, 0-300 Hz, with its resonance peaks
-visco = pipeline.visco_frf(tire, road="flat", progress=False)
+visco = ru.stages.frf_visco(tire, road="flat")
 peaks, _ = ru.analysis.resonance_peaks(visco.freqs, visco.H_tot)
-plotting.plot_htot(visco, peaks, f_max=300)
+f_paper = ru.claims.paper_value("first_vertical_resonance")  # data/paper/claims.toml
+ru.figures.fe_tire_model.plot_htot(visco, peaks, f_max=300, paper={"paper: first vertical resonance": f_paper})
 plt.title("Direct FRF of the whole footprint to the hub (FETvisco), hub fixed")
 plt.show()
 
 # %%
 # NBVAL_CHECK_OUTPUT
 # Calibration table "target / obtained"
-calibration = ru.calibration_table(tire)
+calibration = ru.experiments.calibration_table(tire)
 print(calibration.drop(columns="source").to_string(float_format=lambda v: f"{v:.1f}"))
 assert calibration["ok"].all()
 
@@ -316,7 +318,7 @@ ru.claims.check(claims)
 # ## Explore
 #
 # Change the load and watch the footprint grow (the callback calls `ru.solve_static` and
-# `plotting.plot_footprint`). The default is the paper's 4512 N.
+# `ru.figures.fe_tire_model.plot_footprint`). The default is the paper's 4512 N.
 
 # %%
 # NBVAL_IGNORE_OUTPUT
@@ -326,7 +328,7 @@ from ipywidgets import FloatSlider, interact
 
 def show_footprint(load_N=4512.0):
     state = ru.solve_static(fet, road="flat", load=load_N)
-    ax = plotting.plot_footprint(state, numbers="some")
+    ax = ru.figures.fe_tire_model.plot_footprint(state, numbers="some")
     ax.set_title(f"{load_N:.0f} N: deflection {state.deflection * 1e3:.1f} mm, {state.tasselli.n} tasselli")
     plt.show()
 

@@ -6,6 +6,7 @@
 #       extension: .py
 #       format_name: percent
 #       format_version: '1.3'
+#       jupytext_version: 1.19.6
 #   kernelspec:
 #     display_name: Python 3 (ipykernel)
 #     language: python
@@ -46,7 +47,6 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import roadnoise_utils as ru
-from roadnoise_utils import pipeline, plotting
 
 ru.set_style()
 
@@ -61,7 +61,7 @@ f_band = 250.0
 
 # %%
 # Fig. 4 analogue: the procedure for the local FRFs via modal reduction
-plotting.plot_modal_procedure()
+ru.figures.superposition.plot_modal_procedure()
 plt.show()
 
 # %% [markdown]
@@ -80,8 +80,9 @@ plt.show()
 # NBVAL_IGNORE_OUTPUT
 # Direct sweep 0-400 Hz every 1 Hz, all tasselli (cached; progress bar on a fresh run)
 tire = ru.load_tire(tire_name)
-static = pipeline.static_state(tire, road=road)
-visco = pipeline.visco_frf(tire, road=road)
+surface = {"road": road, "drum_radius": ru.experiments.cleat_conditions().drum_radius if road == "drum" else None}
+static = ru.stages.solve_static(tire, **surface)
+visco = ru.stages.frf_visco(tire, **surface)
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -122,9 +123,9 @@ print(slide_errors.to_string(float_format=lambda v: f"{v:.2e}"))
 
 # %%
 # Identification of the principal vertical modes (cached with the modal reduction)
-reduced = pipeline.modal(tire, road=road)
+reduced = ru.stages.modal_reduction(tire, **surface)
 ident = reduced.identification
-plotting.plot_identification(visco, ident)
+ru.figures.superposition.plot_identification(visco, ident)
 plt.show()
 
 # %%
@@ -179,9 +180,11 @@ print(
 # %%
 # The three modal models (cached)
 variants = {
-    "paper: storage moduli + identified damping": pipeline.modal(tire, road, frozen="storage", damping="identified"),
+    "paper: storage moduli + identified damping": ru.stages.modal_reduction(
+        tire, **surface, frozen="storage", damping="identified"
+    ),
     "frozen complex + identified damping (default)": reduced,
-    "frozen complex, own damping": pipeline.modal(tire, road, frozen="complex", damping="model"),
+    "frozen complex, own damping": ru.stages.modal_reduction(tire, **surface, frozen="complex", damping="model"),
 }
 modal_frfs = {name: v.frf for name, v in variants.items()}
 
@@ -232,7 +235,10 @@ print(shift.to_string(float_format=lambda v: f"{v:.3f}"))
 
 # %%
 # Fig. 5 analogue: |H_tot| of FETvisco vs |sum_i H_i| of the modal models, 0-300 Hz
-ax = plotting.plot_superposition(visco, modal_frfs, f_max=300)
+f_frozen = ru.claims.paper_value("freezing_frequency")  # data/paper/claims.toml
+ax = ru.figures.superposition.plot_superposition(
+    visco, modal_frfs, f_max=300, paper={"paper: moduli frozen at": f_frozen}
+)
 ax.set_title("Fig. 5 analogue: whole footprint (SISO) vs sum of the tasselli (MIMO)")
 plt.show()
 
@@ -287,7 +293,7 @@ assert np.all(np.abs(frf.H[:, 0] - visco.H[:, 0]) <= 0.005 * np.abs(visco.H[:, 0
 
 # %%
 # Static influence H_i(0) of every tassello on the footprint (N/mm)
-ax = plotting.plot_tassello_map(static, visco.H[:, 0].real / 1e3, "H_i(0) (N/mm)")
+ax = ru.figures.common.plot_tassello_map(static, visco.H[:, 0].real / 1e3, "H_i(0) (N/mm)")
 ax.set_title("Static influence of each tassello on the hub force")
 plt.show()
 
@@ -304,7 +310,7 @@ plt.show()
 
 # %%
 # G_H, direct and modal
-plotting.plot_hub_frf({"G_H, FETvisco (direct)": visco, "G_H, modal (default)": reduced.frf})
+ru.figures.superposition.plot_hub_frf({"G_H, FETvisco (direct)": visco, "G_H, modal (default)": reduced.frf})
 plt.show()
 
 # %%
@@ -342,7 +348,7 @@ ru.claims.check(claims)
 # ## Explore: one tassello, direct vs modal
 #
 # Pick a tassello (numbered from the leading edge as in notebook 01); the callback plots its
-# direct and modal FRFs with `plotting.plot_tassello_frf`.
+# direct and modal FRFs with `ru.figures.superposition.plot_tassello_frf`.
 
 # %%
 # NBVAL_IGNORE_OUTPUT
@@ -356,7 +362,7 @@ def show_tassello(tassello=37):
         "paper: storage + identified": modal_frfs["paper: storage moduli + identified damping"],
         "frozen complex + identified (default)": reduced.frf,
     }
-    plotting.plot_tassello_frf(static, frfs, tassello)
+    ru.figures.superposition.plot_tassello_frf(static, frfs, tassello)
     plt.show()
 
 

@@ -6,6 +6,7 @@
 #       extension: .py
 #       format_name: percent
 #       format_version: '1.3'
+#       jupytext_version: 1.19.6
 #   kernelspec:
 #     display_name: Python 3 (ipykernel)
 #     language: python
@@ -40,7 +41,6 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import roadnoise_utils as ru
-from roadnoise_utils import pipeline, plotting
 
 ru.set_style()
 
@@ -55,9 +55,10 @@ tolerance = 0.01
 # NBVAL_IGNORE_OUTPUT
 # The local FRFs of notebook 02 (cached): direct (FETvisco) and modal
 tire = ru.load_tire(tire_name)
-static = pipeline.static_state(tire, road=road)
-visco = pipeline.visco_frf(tire, road=road)
-modal = pipeline.modal(tire, road=road)
+surface = {"road": road, "drum_radius": ru.experiments.cleat_conditions().drum_radius if road == "drum" else None}
+static = ru.stages.solve_static(tire, **surface)
+visco = ru.stages.frf_visco(tire, **surface)
+modal = ru.stages.modal_reduction(tire, **surface)
 band = visco.freqs <= f_max
 
 # %% [markdown]
@@ -73,14 +74,14 @@ band = visco.freqs <= f_max
 # NBVAL_CHECK_OUTPUT
 # Error of the fits against the model order, direct and modal FRFs (0-250 Hz)
 orders = range(8, 17)
-scan_direct = ru.fitting.order_scan(visco.freqs, visco.H, orders, f_max=f_max)
-scan_modal = ru.fitting.order_scan(modal.frf.freqs, modal.frf.H, orders, f_max=f_max)
+scan_direct = ru.rm.order_scan(visco.freqs, visco.H, orders, f_max=f_max)
+scan_modal = ru.rm.order_scan(modal.frf.freqs, modal.frf.H, orders, f_max=f_max)
 both = scan_direct.drop(columns="time (s)").join(scan_modal.drop(columns="time (s)").add_suffix(" (modal)"))
 print(both.to_string(float_format=lambda v: f"{v:.3f}"))
 
 # %%
 # Order scan: the paper's 8 poles and our 1 % target
-plotting.plot_order_scan({"direct FRFs": scan_direct, "modal FRFs": scan_modal}, tolerance)
+ru.figures.tassello_fitting.plot_order_scan({"direct FRFs": scan_direct, "modal FRFs": scan_modal}, tolerance)
 plt.show()
 
 # %% [markdown]
@@ -93,7 +94,7 @@ plt.show()
 # %%
 # NBVAL_CHECK_OUTPUT
 # The fits used by the later stages (cached): lowest order with every tassello within 1 %
-fits = pipeline.tassello_fits(tire, road=road)
+fits = ru.stages.fit_tasselli(tire, **surface)
 table = fits.table()
 print(
     f"{len(fits)} tasselli, {fits.n_poles} poles and {fits.n_poles} zeros each, band "
@@ -108,7 +109,7 @@ assert table["rms error"].max() < tolerance and (table["max Re(p) (1/s)"] < 0).a
 
 # %%
 # Relative RMS error of each tassello's fit on the footprint
-ax = plotting.plot_tassello_map(
+ax = ru.figures.common.plot_tassello_map(
     static, 100 * table["rms error"].to_numpy(), "rms error (%)", cmap="viridis", symmetric=False
 )
 ax.set_title(f"Fit error per tassello, {fits.n_poles} poles")
@@ -121,7 +122,7 @@ plt.show()
 # Fig. 6 analogue: target (FEA) vs identified modulus and phase, central tassello
 centre = int(np.argmin(np.hypot(static.tasselli.centre_x, static.tasselli.centre_y)))
 f = visco.freqs[band]
-plotting.plot_fit(
+ru.figures.tassello_fitting.plot_fit(
     f,
     visco.H[centre, band],
     fits[centre](f),
@@ -180,7 +181,7 @@ print(f"sum of DC gains {dc.sum() / 1e3:.2f} N/mm = H_tot(0) {visco.H_tot[0].rea
 # NBVAL_CHECK_OUTPUT
 # Assembled model (python-control) vs the fitted FRFs, at 12 frequencies
 check_freqs = np.linspace(0.0, f_max, 12)
-assembled = ru.statespace.frequency_response(tire_F, check_freqs)
+assembled = ru.rm.frequency_response(tire_F, check_freqs)
 fitted = fits.responses(check_freqs)
 assembly_error = np.max(np.abs(assembled - fitted)) / np.max(np.abs(fitted))
 print(f"max |assembled - fitted| / max |fitted|: {ru.analysis.format_small(assembly_error, 1e-10)}")
@@ -204,7 +205,7 @@ plt.show()
 # %%
 # NBVAL_CHECK_OUTPUT
 # Fit of G_H (the same 1 % rule)
-hub = pipeline.hub_fit(tire, road=road)
+hub = ru.stages.fit_hub(tire, **surface)
 print(f"G_H: {hub.n_poles} poles, relative RMS error {hub[0].rms_error:.4f}, G_H(0) = {hub[0].dc_gain / 1e3:.2f} N/mm")
 
 # %% [markdown]
@@ -216,8 +217,8 @@ print(f"G_H: {hub.n_poles} poles, relative RMS error {hub[0].rms_error:.4f}, G_H
 # %%
 # NBVAL_IGNORE_OUTPUT
 # Side by side: errors and wall time (timings vary run to run)
-peer_errors, peer_seconds = ru.peers.skrf_vector_fit(visco.freqs, visco.H, fits.n_poles, f_max)
-ru.peers.fit_comparison(fits.rms_errors, fits.seconds, peer_errors, peer_seconds)
+peer_errors, peer_seconds = ru.rm.fitting_peer.skrf_vector_fit(visco.freqs, visco.H, fits.n_poles, f_max)
+ru.rm.fitting_peer.fit_comparison(fits.rms_errors, fits.seconds, peer_errors, peer_seconds)
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -258,7 +259,7 @@ from ipywidgets import IntSlider, interact
 
 def show_fit(tassello=37, n_poles=14):
     fit = ru.vector_fit(f, visco.H[tassello - 1, band], n_poles=n_poles)
-    plotting.plot_fit(
+    ru.figures.tassello_fitting.plot_fit(
         f, visco.H[tassello - 1, band], fit(f), f"tassello {tassello}, {n_poles} poles: rms error {fit.rms_error:.2%}"
     )
     plt.show()

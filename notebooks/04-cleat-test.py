@@ -6,6 +6,7 @@
 #       extension: .py
 #       format_name: percent
 #       format_version: '1.3'
+#       jupytext_version: 1.19.6
 #   kernelspec:
 #     display_name: Python 3 (ipykernel)
 #     language: python
@@ -41,14 +42,12 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import roadnoise_utils as ru
-from roadnoise_utils import cleat, pipeline, plotting
-from roadnoise_utils.simulation import modal_sections
 
 ru.set_style()
 
 # %% tags=["parameters"]
 # Parameters (papermill): tire file, speeds (km/h), cleat (m); None takes the paper's test
-# from data/conditions/cleat_test.toml
+# from data/conditions/cleat_test.toml (resolved by ru.experiments.cleat_conditions)
 tire_name = "165_65R14"
 speed_kmh = None
 quasi_static_kmh = None
@@ -63,15 +62,15 @@ cleat_base = None
 
 # %%
 # NBVAL_IGNORE_OUTPUT
-# The loaded tire on the drum and its fixed-hub state-space model (cached)
-tire = ru.load_tire(tire_name)
-drum = pipeline.static_state(tire, road="drum")
-tire_F = pipeline.fixed_hub_tire(tire, road="drum")
-sections = modal_sections(tire_F)  # the decomposition the fast simulation runs, reused for every run
-cleat_shape = ru.conditions.with_defaults("cleat_test", "cleat", height=cleat_height, base=cleat_base, shape=None)
-speeds = ru.conditions.with_defaults("cleat_test", "speeds", dynamic_kmh=speed_kmh, quasi_static_kmh=quasi_static_kmh)
-height, base = cleat_shape["height"], cleat_shape["base"]
-speed_kmh, quasi_static_kmh = speeds["dynamic_kmh"], speeds["quasi_static_kmh"]
+# The paper's test (data/conditions/cleat_test.toml; the parameters above override it), run on the
+# tire: the drum footprint, its fixed-hub state-space tire, both runs and the FE check (cached stages)
+conditions = ru.experiments.cleat_conditions(
+    height=cleat_height, base=cleat_base, dynamic_kmh=speed_kmh, quasi_static_kmh=quasi_static_kmh
+)
+test = ru.experiments.cleat_test(tire_name, conditions=conditions, fe_reference=True)
+tire, drum, tire_F = test.tire, test.static, test.system
+height, base = conditions.height, conditions.base
+speed_kmh, quasi_static_kmh = conditions.dynamic_kmh, conditions.quasi_static_kmh
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -80,7 +79,7 @@ print(
     f"{tire.name}: drum R = {drum.road.drum_radius:.2f} m, footprint {drum.footprint_length * 1e3:.0f} mm long, "
     f"{drum.tasselli.n} tasselli; state-space tire: {tire_F.nstates} states, {tire_F.ninputs} inputs"
 )
-print(f"cleat: {cleat_shape['shape']}, base {base * 1e3:.0f} mm, height {height * 1e3:.0f} mm")
+print(f"cleat: {conditions.shape}, base {base * 1e3:.0f} mm, height {height * 1e3:.0f} mm")
 
 # %% [markdown]
 # ## 2. The road flowing through the footprint
@@ -92,9 +91,9 @@ print(f"cleat: {cleat_shape['shape']}, base {base * 1e3:.0f} mm, height {height 
 
 # %%
 # Tassello displacements at 30 km/h, the centre column, leading, middle and trailing rows
-dynamic_road = ru.cleat_input(drum, speed_kmh / 3.6, height=height, base=base, distance=(-0.1, 0.6))
+dynamic_road = test.dynamic.result.road
 last_row = int(drum.tasselli.row.max())
-plotting.plot_tassello_inputs(dynamic_road, drum, [0, last_row // 2, last_row])
+ru.figures.cleat_test.plot_tassello_inputs(dynamic_road, drum, [0, last_row // 2, last_row])
 plt.xlim(-0.1, 0.15)
 plt.show()
 
@@ -104,7 +103,7 @@ plt.show()
 print(
     f"{speed_kmh:.0f} km/h: {dynamic_road.sample_rate:.0f} Hz, {dynamic_road.u.shape[1]} samples of {dynamic_road.u.shape[0]} inputs"
 )
-quasi_road = ru.cleat_input(drum, quasi_static_kmh / 3.6, height=height, base=base, distance=(-0.1, 0.15))
+quasi_road = test.quasi_static.result.road
 print(f"{quasi_static_kmh} km/h: {quasi_road.sample_rate:.0f} Hz, {quasi_road.u.shape[1]} samples")
 
 # %% [markdown]
@@ -115,12 +114,17 @@ print(f"{quasi_static_kmh} km/h: {quasi_road.sample_rate:.0f} Hz, {quasi_road.u.
 # as a second-order IIR filter (`scipy.signal.lfilter`). No loop over time steps in Python.
 
 # %%
-# Fig. 9 analogue: quasi-static (base curve) and 30 km/h (dynamic curve) runs
-quasi = cleat.analyse_run(ru.simulate(sections, quasi_road), drum, base, dynamic=False)
-dynamic = cleat.analyse_run(ru.simulate(sections, dynamic_road), drum, base, dynamic=True)
-ax = plotting.plot_cleat_runs(
+# Fig. 9 analogue: quasi-static (base curve) and 30 km/h (dynamic curve) runs, with the paper's peaks
+quasi, dynamic = test.quasi_static, test.dynamic
+paper = {  # data/paper/claims.toml
+    "paper: measured quasi-static peak": ru.claims.paper_value("cleat_quasi_static", "measured"),
+    "paper: simulated quasi-static peak": ru.claims.paper_value("cleat_quasi_static"),
+    "paper: dynamic peak (≈ 2.2 x measured)": ru.claims.paper_value("cleat_dynamic"),
+}
+ax = ru.figures.cleat_test.plot_cleat_runs(
     {f"base curve ({quasi_static_kmh} km/h)": quasi, f"dynamic curve ({speed_kmh:.0f} km/h)": dynamic},
     title="Fig. 9 analogue: simulated hub force during a cleat test",
+    paper=paper,
 )
 plt.show()
 
@@ -185,10 +189,10 @@ ru.claims.check(claims)
 
 # %%
 # Static influence of each row along the drum footprint: where the two peaks come from
-visco_drum = pipeline.visco_frf(tire, road="drum", progress=False)
+visco_drum = ru.stages.frf_visco(tire, road="drum", drum_radius=conditions.drum_radius)
 static_influence = visco_drum.H[:, 0].real
-rows = cleat.row_influence(drum, static_influence)
-ax = plotting.plot_row_influence(rows, drum, base)
+rows = ru.experiments.cleat.row_influence(drum, static_influence)
+ax = ru.figures.cleat_test.plot_row_influence(rows, drum, base)
 ax.set_title("Static influence H_i(0) of each row: the cleat meets the large rows at entry and exit")
 plt.show()
 
@@ -196,7 +200,7 @@ plt.show()
 # NBVAL_CHECK_OUTPUT
 # Row influences, and the quasi-static force straight from them (no dynamics at all)
 print((rows.round(1) + 0.0).to_string(float_format=lambda v: f"{v:.1f}"))  # + 0.0: no "-0.0"
-direct_quasi = cleat.quasi_static_force(static_influence, quasi_road)
+direct_quasi = ru.experiments.cleat.quasi_static_force(static_influence, quasi_road)
 print(
     f"peak of sum_i H_i(0) u_i: {direct_quasi.max():.1f} N; simulated at {quasi_static_kmh} km/h: "
     f"{quasi.peak_force:.1f} N"
@@ -215,7 +219,8 @@ variants = {
 for name, change in variants.items():
     spec = tire.replace(**change)
     fet_variant = ru.build_fet(spec)
-    peak = cleat.quasi_static_peak(fet_variant, ru.solve_static(fet_variant, road="drum"), height, base)
+    static_variant = ru.solve_static(fet_variant, road="drum", drum_radius=conditions.drum_radius)
+    peak = ru.experiments.cleat.quasi_static_peak(fet_variant, static_variant, height, base, conditions.shape)
     print(f"{name:36s} quasi-static peak {peak:6.0f} N")
 
 # %% [markdown]
@@ -232,10 +237,8 @@ for name, change in variants.items():
 # to the RM model's 250 Hz the same way (zero phase).
 
 # %%
-# NBVAL_IGNORE_OUTPUT
-# FE frequency-domain response (cached) and the RM chain on the same road, band-limited to 250 Hz
-road, fe_force = pipeline.cleat_fe(tire, speed_kmh / 3.6, height=height, base=base)
-rm_force = cleat.rm_cleat_response(sections, road)
+# The FE frequency-domain response and the RM chain on the same road, band-limited to 250 Hz
+road, fe_force, rm_force = test.fe_reference.road, test.fe_reference.fe_force, test.fe_reference.rm_force
 
 # %%
 # RM chain vs FE model
@@ -250,8 +253,8 @@ plt.show()
 # %%
 # NBVAL_CHECK_OUTPUT
 # Peak and RMS differences between the RM chain and the FE model
-peak_difference = rm_force.max() / fe_force.max() - 1
-rms_difference = ru.analysis.relative_rms_error(rm_force, fe_force)
+peak_difference = test.fe_reference.peak_difference
+rms_difference = test.fe_reference.rms_difference
 print(f"peak: FE {fe_force.max():.1f} N, RM {rm_force.max():.1f} N, difference {peak_difference:+.2%}")
 print(f"RMS of the difference / RMS of the FE force: {rms_difference:.2%}")
 assert abs(peak_difference) < 0.02 and rms_difference < 0.02
@@ -273,7 +276,7 @@ import control
 
 short = dynamic_road.excerpt(0, 300)
 reference = control.forced_response(tire_F, T=short.t, U=short.u).outputs
-fast = ru.simulate(sections, short).force
+fast = ru.simulate(test.sections, short).force
 agreement = np.max(np.abs(fast - reference)) / np.max(np.abs(reference))
 print(f"max |ours - python-control| / max |python-control|: {ru.analysis.format_small(agreement, 1e-9)}")
 assert agreement < 1e-9
@@ -290,10 +293,10 @@ from ipywidgets import FloatSlider, interact
 
 
 def show_cleat(speed_kmh, height_mm, base_mm):
-    run = cleat.run_cleat(
-        sections, drum, speed_kmh / 3.6, height=height_mm / 1e3, base=base_mm / 1e3, distance=(-0.1, 0.6), dynamic=False
+    run = ru.experiments.cleat.run_cleat(
+        test.sections, drum, speed_kmh / 3.6, height_mm / 1e3, base_mm / 1e3, conditions.shape, (-0.1, 0.6), False
     )
-    plotting.plot_cleat_runs({f"{speed_kmh:.0f} km/h": run}, title=f"peak {run.peak_force:.0f} N")
+    ru.figures.cleat_test.plot_cleat_runs({f"{speed_kmh:.0f} km/h": run}, title=f"peak {run.peak_force:.0f} N")
     plt.show()
 
 

@@ -6,6 +6,7 @@
 #       extension: .py
 #       format_name: percent
 #       format_version: '1.3'
+#       jupytext_version: 1.19.6
 #   kernelspec:
 #     display_name: Python 3 (ipykernel)
 #     language: python
@@ -38,7 +39,6 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import roadnoise_utils as ru
-from roadnoise_utils import movinghub, pipeline, plotting
 
 ru.set_style()
 
@@ -52,7 +52,7 @@ suspension_damping = None
 
 # %%
 # Fig. 7 analogue: F_M = F_F + F_H
-plotting.plot_moving_hub_scheme()
+ru.figures.moving_hub.plot_moving_hub_scheme()
 plt.show()
 
 # %% [markdown]
@@ -65,16 +65,15 @@ plt.show()
 
 # %%
 # NBVAL_IGNORE_OUTPUT
-# The tire's direct FRFs, the tasselli fits and the hub fit (cached stages)
+# The tire's direct FRFs, the tasselli fits and the hub fit (cached stages); the check's suspension
+# (data/conditions/moving_hub_check.toml; the parameters above override it)
 tire = ru.load_tire(tire_name)
 fet = ru.build_fet(tire)
-static = pipeline.static_state(tire)
-visco = pipeline.visco_frf(tire)
-fits = pipeline.tassello_fits(tire)
-hub = pipeline.hub_fit(tire)
-suspension = ru.conditions.with_defaults(
-    "moving_hub_check", "hub", mass=hub_mass, stiffness=suspension_stiffness, damping=suspension_damping
-)
+static = ru.stages.solve_static(tire)
+visco = ru.stages.frf_visco(tire)
+fits = ru.stages.fit_tasselli(tire)
+hub = ru.stages.fit_hub(tire)
+suspension = ru.experiments.suspension_conditions(hub_mass, suspension_stiffness, suspension_damping)
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -91,7 +90,7 @@ print(
 # %%
 # G_H: direct FE and fitted, 0-250 Hz
 band = visco.freqs <= 250
-plotting.plot_frf_pair(
+ru.figures.moving_hub.plot_frf_pair(
     visco.freqs[band],
     {"G_H, FE direct": visco.G_H[band], f"G_H, fit ({hub.n_poles} poles)": hub[0](visco.freqs[band])},
     "|G_H| (N/m)",
@@ -104,7 +103,7 @@ plt.show()
 # %%
 # NBVAL_CHECK_OUTPUT
 # (A_M, B_M, C_M, D_M): the fixed-hub tire and G_H side by side
-tire_M = movinghub.assemble_moving_hub(fits, hub)
+tire_M = ru.rm.assemble_moving_hub(fits, hub)
 print(
     f"moving-hub tire: {tire_M.nstates} states = {fits.n_poles} x {len(fits)} (tasselli) + {hub.n_poles} (hub); "
     f"{tire_M.ninputs} inputs = {len(fits)} tasselli + hub; {tire_M.noutputs} output (F_M)"
@@ -123,22 +122,20 @@ print(f"stable: {bool(np.all(np.linalg.eigvals(tire_M.A).real < 0))}")
 # %%
 # NBVAL_IGNORE_OUTPUT
 # FE with a free hub vs the RM model (Eq. 5-7), 1-250 Hz
-freqs = np.arange(1.0, 251.0)
-hub_suspension = (suspension["mass"], suspension["stiffness"], suspension["damping"])
-u_fe, f_fe = movinghub.fe_moving_hub(fet, static, freqs, *hub_suspension)
-u_rm, f_rm = movinghub.rm_moving_hub(fits, hub, freqs, *hub_suspension, tire_hub_mass=fet.hub_vertical_mass)
+check = ru.experiments.moving_hub_check(tire, np.arange(1.0, 251.0), suspension)
+freqs, u_fe, f_fe, u_rm, f_rm = check.freqs, check.fe_hub, check.fe_force, check.rm_hub, check.rm_force
 omega2 = (2 * np.pi * freqs) ** 2
 
 # %%
 # Hub acceleration and hub force per unit road displacement of the whole footprint
 fig, axes = plt.subplots(1, 2, figsize=(12, 4))
-plotting.plot_frf_pair(
+ru.figures.moving_hub.plot_frf_pair(
     freqs,
     {"FE, hub free (direct)": omega2 * u_fe, "RM model (Eq. 5-7)": omega2 * u_rm},
     "|hub acceleration / road displacement| (1/s^2)",
     ax=axes[0],
 )
-plotting.plot_frf_pair(
+ru.figures.moving_hub.plot_frf_pair(
     freqs, {"FE, hub free (direct)": f_fe, "RM model (Eq. 5-7)": f_rm}, "|F_M / road displacement| (N/m)", ax=axes[1]
 )
 plt.show()
@@ -146,10 +143,7 @@ plt.show()
 # %%
 # NBVAL_CHECK_OUTPUT
 # Relative errors of the RM model against the FE model with a free hub, 1-250 Hz
-errors = {
-    "hub acceleration": ru.analysis.relative_rms_error(omega2 * u_rm, omega2 * u_fe),
-    "hub force F_M": ru.analysis.relative_rms_error(f_rm, f_fe),
-}
+errors = check.errors()
 for name, value in errors.items():
     print(f"{name:18s}: relative RMS error {value:.2%}")
 assert all(value < 0.02 for value in errors.values())
@@ -204,19 +198,19 @@ from ipywidgets import FloatSlider, interact
 
 def show_moving_hub(hub_mass_kg, stiffness_N_per_mm):
     f = np.arange(5.0, 251.0, 2.0)
-    check = (hub_mass_kg, stiffness_N_per_mm * 1e3, suspension["damping"])
-    u_a, _ = movinghub.fe_moving_hub(fet, static, f, *check)
-    u_b, _ = movinghub.rm_moving_hub(fits, hub, f, *check, tire_hub_mass=fet.hub_vertical_mass)
+    changed = ru.experiments.Suspension(hub_mass_kg, stiffness_N_per_mm * 1e3, suspension.damping)
+    run = ru.experiments.moving_hub_check(tire, f, changed)
     w2 = (2 * np.pi * f) ** 2
-    plotting.plot_frf_pair(f, {"FE, hub free": w2 * u_a, "RM model": w2 * u_b}, "|hub acceleration / road| (1/s^2)")
+    curves = {"FE, hub free": w2 * run.fe_hub, "RM model": w2 * run.rm_hub}
+    ru.figures.moving_hub.plot_frf_pair(f, curves, "|hub acceleration / road| (1/s^2)")
     plt.show()
 
 
 interact(
     show_moving_hub,
-    hub_mass_kg=FloatSlider(value=suspension["mass"], min=5.0, max=80.0, step=1.0, continuous_update=False),
+    hub_mass_kg=FloatSlider(value=suspension.mass, min=5.0, max=80.0, step=1.0, continuous_update=False),
     stiffness_N_per_mm=FloatSlider(
-        value=suspension["stiffness"] / 1e3, min=5.0, max=100.0, step=5.0, continuous_update=False
+        value=suspension.stiffness / 1e3, min=5.0, max=100.0, step=5.0, continuous_update=False
     ),
 )
 

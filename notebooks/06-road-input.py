@@ -6,6 +6,7 @@
 #       extension: .py
 #       format_name: percent
 #       format_version: '1.3'
+#       jupytext_version: 1.19.6
 #   kernelspec:
 #     display_name: Python 3 (ipykernel)
 #     language: python
@@ -34,8 +35,6 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import roadnoise_utils as ru
-from roadnoise_utils import pipeline, plotting, textures
-from roadnoise_utils.road import contact_tracks, profile_input
 
 ru.set_style()
 
@@ -49,11 +48,9 @@ speed_kmh = None
 length = 400.0
 
 # %%
-# The parameters left at None take the paper's road test
-road_test = ru.conditions.with_defaults(
-    "road_test", textures=texture_names, seed=seed, speed_kmh=speed_kmh, sample_rate=None
-)
-texture_names, seed, speed_kmh = road_test["textures"], road_test["seed"], road_test["speed_kmh"]
+# The parameters left at None take the paper's road test (data/conditions/road_test.toml)
+road_test = ru.experiments.road_test_conditions(speed_kmh=speed_kmh, textures=texture_names, seed=seed)
+texture_names, seed, speed_kmh = road_test.textures, road_test.seed, road_test.speed_kmh
 
 # %% [markdown]
 # ## 1. Spectra: ISO 8608 and the megatexture
@@ -67,7 +64,7 @@ texture_names, seed, speed_kmh = road_test["textures"], road_test["seed"], road_
 # %%
 # NBVAL_CHECK_OUTPUT
 # The two textures
-spectra = {name: textures.load_texture(name) for name in texture_names}
+spectra = road_test.spectra()
 for name, sp in spectra.items():
     print(
         f"{name:7s}: ISO 8608 class {sp.iso_class} (G(n0) = {sp.reference_psd * 1e6:.0f}e-6 m^3, w = {sp.exponent:.1f}), "
@@ -77,10 +74,10 @@ for name, sp in spectra.items():
 
 # %%
 # Generate one profile per texture (seeded), and estimate their PSD (Welch)
-profiles = {name: textures.generate_profile(sp, length, 0.002, seed=seed) for name, sp in spectra.items()}
-measured = {name: textures.profile_psd(p) for name, p in profiles.items()}
+profiles = {name: ru.textures.generate_profile(sp, length, 0.002, seed=seed) for name, sp in spectra.items()}
+measured = {name: ru.textures.profile_psd(p) for name, p in profiles.items()}
 n = np.logspace(-2, np.log10(25), 300)
-plotting.plot_road_spectra(spectra, n, textures.ISO8608_CLASSES, measured=measured)
+ru.figures.road_input.plot_road_spectra(spectra, n, ru.textures.ISO8608_CLASSES, measured=measured)
 plt.title("Road spectra: targets, generated profiles and the ISO 8608 classes (grey)")
 plt.show()
 
@@ -104,8 +101,8 @@ for name, (nm, gm) in measured.items():
 # %%
 # NBVAL_CHECK_OUTPUT
 # Same seed, same road; another seed, another road with the same spectrum
-again = textures.generate_profile(spectra["rough"], length, 0.002, seed=seed)
-other = textures.generate_profile(spectra["rough"], length, 0.002, seed=seed + 1)
+again = ru.textures.generate_profile(spectra["rough"], length, 0.002, seed=seed)
+other = ru.textures.generate_profile(spectra["rough"], length, 0.002, seed=seed + 1)
 print(f"seed {seed} twice: identical = {np.array_equal(again.z, profiles['rough'].z)}")
 print(f"seed {seed + 1}: correlation with seed {seed} = {np.corrcoef(other.z[0], profiles['rough'].z[0])[0, 1]:+.2f}")
 print(
@@ -134,11 +131,11 @@ plt.show()
 # %%
 # Coherence between tracks 14 mm and 126 mm apart
 tire = ru.load_tire(tire_name)
-static = pipeline.static_state(tire)
-strip_y = contact_tracks(static)
+static = ru.stages.solve_static(tire)
+strip_y = ru.road.contact_tracks(static)
 fig, ax = plt.subplots(figsize=(7, 3.5))
 for b in (strip_y[1] - strip_y[0], strip_y[-1] - strip_y[0]):
-    ax.semilogx(n, textures.coherence(spectra["rough"], n, b), label=f"tracks {b * 1e3:.0f} mm apart")
+    ax.semilogx(n, ru.textures.coherence(spectra["rough"], n, b), label=f"tracks {b * 1e3:.0f} mm apart")
 ax.set_xlabel("wavenumber n (cycles/m)")
 ax.set_ylabel("coherence γ")
 ax.legend()
@@ -146,8 +143,8 @@ plt.show()
 
 # %%
 # The 3D rough road on the strip centre lines of the 195/65 R15
-field = textures.generate_field(spectra["rough"], length, 0.002, strip_y, seed=seed)
-plotting.plot_tracks(field, 2.0)
+field = ru.textures.generate_field(spectra["rough"], length, 0.002, strip_y, seed=seed)
+ru.figures.road_input.plot_tracks(field, 2.0)
 plt.title(f"Rough 3D road: {len(strip_y)} tracks, one per column of tasselli")
 plt.show()
 
@@ -156,7 +153,7 @@ plt.show()
 # Every track has the target spectrum (1-8 cycles/m), neighbours are nearly identical, edges less so
 ratios = []
 for track in range(len(strip_y)):
-    nm, gm = textures.profile_psd(field, track)
+    nm, gm = ru.textures.profile_psd(field, track)
     k = (nm >= 1) & (nm < 8)
     ratios.append(np.mean(gm[k]) / np.mean(spectra["rough"].psd(nm[k])))
 print(f"PSD / target, 1-8 cycles/m, per track: min {min(ratios):.2f}, max {max(ratios):.2f}")
@@ -174,11 +171,12 @@ print(
 
 # %%
 # Tassello inputs of the leading row for the 2D and 3D rough roads, the first 0.1 s
-speed = speed_kmh / 3.6
-sample_rate = road_test["sample_rate"]
-road_2d = profile_input(static, profiles["rough"].as_2d(), speed, (0.0, 3.0), sample_rate=sample_rate, oversample=1)
-road_3d = profile_input(static, field.as_3d(), speed, (0.0, 3.0), sample_rate=sample_rate, oversample=1)
-plotting.plot_row_inputs({"2D road: every column sees the same track": road_2d, "3D road": road_3d}, static)
+speed, sample_rate = road_test.speed, road_test.sample_rate
+road_2d = ru.road.profile_input(static, profiles["rough"].as_2d(), speed, (0.0, 3.0), sample_rate, oversample=1)
+road_3d = ru.road.profile_input(static, field.as_3d(), speed, (0.0, 3.0), sample_rate, oversample=1)
+ru.figures.road_input.plot_row_inputs(
+    {"2D road: every column sees the same track": road_2d, "3D road": road_3d}, static
+)
 plt.show()
 
 # %% [markdown]
@@ -193,8 +191,10 @@ plt.show()
 wavelengths = np.logspace(np.log10(0.01), np.log10(1.0), 300)
 t = static.tasselli
 centre = [i for i in range(t.n) if t.column[i] == int(np.median(t.column))]
-gains = ru.corner.kernel_transforms(static, 1.0 / wavelengths)[centre]
-plotting.plot_kernel_filter(wavelengths, gains, [f"tassello {i + 1} ({t.length[i] * 1e3:.0f} mm)" for i in centre])
+gains = ru.road.kernel_transforms(static, 1.0 / wavelengths)[centre]
+ru.figures.road_input.plot_kernel_filter(
+    wavelengths, gains, [f"tassello {i + 1} ({t.length[i] * 1e3:.0f} mm)" for i in centre]
+)
 plt.title("Footprint filtering: road amplitude reaching each tassello")
 plt.show()
 
@@ -208,11 +208,11 @@ plt.show()
 # %%
 # NBVAL_CHECK_OUTPUT
 # Tasselli vs contact-point resolution: hub-force error at 100 Hz per road wavelength
-visco = pipeline.visco_frf(tire, progress=False)
+visco = ru.stages.frf_visco(tire)
 k100 = int(np.argmin(np.abs(visco.freqs - 100.0)))
 for wavelength in (1.0, 0.5, 0.2, 0.1, 0.05, 0.03):
-    gain = np.mean(np.abs(ru.corner.kernel_transforms(static, [1.0 / wavelength])[centre]))
-    error = ru.corner.tassellation_error(static, visco.H_points[:, k100], [wavelength])[0]
+    gain = np.mean(np.abs(ru.road.kernel_transforms(static, [1.0 / wavelength])[centre]))
+    error = ru.road.tassellation_error(static, visco.H_points[:, k100], [wavelength])[0]
     print(
         f"lambda = {wavelength * 100:5.1f} cm: {gain:5.1%} of the amplitude reaches a tassello; "
         f"hub-force error of the tasselli {error:5.1%}"
@@ -230,7 +230,7 @@ for wavelength in (1.0, 0.5, 0.2, 0.1, 0.05, 0.03):
 # NBVAL_CHECK_OUTPUT
 # Asking for shorter wavelengths is an error that names the limit
 try:
-    textures.RoadSpectrum("too fine", 256e-6, 2.0, 2.0, 1.5, min_wavelength=0.02, max_wavelength=50.0)
+    ru.textures.RoadSpectrum("too fine", 256e-6, 2.0, 2.0, 1.5, min_wavelength=0.02, max_wavelength=50.0)
 except ValueError as error:
     print(error)
 
@@ -264,10 +264,10 @@ from ipywidgets import Dropdown, IntSlider, interact
 
 
 def show_texture(texture, seed):
-    spectrum = textures.load_texture(texture)
-    profile = textures.generate_profile(spectrum, 200.0, 0.002, seed=seed)
-    plotting.plot_road_spectra(
-        {texture: spectrum}, n, textures.ISO8608_CLASSES, measured={texture: textures.profile_psd(profile)}
+    spectrum = ru.textures.load_texture(texture)
+    profile = ru.textures.generate_profile(spectrum, 200.0, 0.002, seed=seed)
+    ru.figures.road_input.plot_road_spectra(
+        {texture: spectrum}, n, ru.textures.ISO8608_CLASSES, measured={texture: ru.textures.profile_psd(profile)}
     )
     plt.show()
 

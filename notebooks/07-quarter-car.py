@@ -6,6 +6,7 @@
 #       extension: .py
 #       format_name: percent
 #       format_version: '1.3'
+#       jupytext_version: 1.19.6
 #   kernelspec:
 #     display_name: Python 3 (ipykernel)
 #     language: python
@@ -45,9 +46,6 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import roadnoise_utils as ru
-from roadnoise_utils import corner, pipeline, plotting, textures, vehicle
-from roadnoise_utils.road import texture_input
-from roadnoise_utils.simulation import modal_sections
 
 ru.set_style()
 
@@ -62,11 +60,9 @@ texture_names = None
 band = 250.0
 
 # %%
-# The parameters left at None take the paper's road test
-road_test = ru.conditions.with_defaults(
-    "road_test", speed_kmh=speed_kmh, seed=seed, duration=duration, textures=texture_names, sample_rate=None
-)
-speed_kmh, seed, duration, texture_names = (road_test[k] for k in ("speed_kmh", "seed", "duration", "textures"))
+# The parameters left at None take the paper's road test (data/conditions/road_test.toml)
+road_test = ru.experiments.road_test_conditions(speed_kmh, texture_names, duration, seed)
+speed_kmh, seed, duration, texture_names = road_test.speed_kmh, road_test.seed, road_test.duration, road_test.textures
 
 # %% [markdown]
 # ## 1. The quarter car (Fig. 13 analogue)
@@ -80,8 +76,8 @@ speed_kmh, seed, duration, texture_names = (road_test[k] for k in ("speed_kmh", 
 
 # %%
 # Fig. 13 analogue: the quarter car
-car = vehicle.load_vehicle(vehicle_name)
-plotting.plot_quarter_car_scheme(car)
+car = ru.vehicle.load_vehicle(vehicle_name)
+ru.figures.quarter_car.plot_quarter_car_scheme(car)
 plt.show()
 
 # %% [markdown]
@@ -91,15 +87,15 @@ plt.show()
 # Fig. 10 analogue: upper-mount over hub acceleration
 freqs = np.linspace(1.0, 300.0, 600)
 fig10_bands = ru.claims.transmissibility_bands()  # the paper's three bands (data/paper/claims.toml)
-transmissibility = vehicle.transmissibility(car, freqs)
-ax = plotting.plot_transmissibility(freqs, transmissibility, fig10_bands)
+transmissibility = ru.vehicle.transmissibility(car, freqs)
+ax = ru.figures.quarter_car.plot_transmissibility(freqs, transmissibility, fig10_bands)
 ax.set_title("Fig. 10 analogue: transfer function between the accelerations at the shock absorber ends")
 plt.show()
 
 # %%
 # NBVAL_CHECK_OUTPUT
 # The character of Fig. 10, band by band: the statistic of |T| each claim is judged on
-statistics = vehicle.transmissibility_statistics(car, fig10_bands)
+statistics = ru.vehicle.transmissibility_statistics(car, fig10_bands)
 for claim_id, band_ in fig10_bands.items():
     print(
         f"{band_.statistic:4s} |T| {band_.f_low:.0f}-{band_.f_high:.0f} Hz: {statistics[claim_id]:.2f} ({band_.label})"
@@ -116,14 +112,8 @@ for claim_id, band_ in fig10_bands.items():
 # %%
 # NBVAL_IGNORE_OUTPUT
 # The tire (cached stages) and the coupled corner model
-tire = ru.load_tire(car.tire)
-fet = ru.build_fet(tire)
-static = pipeline.static_state(tire)
-fits = pipeline.tassello_fits(tire)
-hub = pipeline.hub_fit(tire)
-rim_side_mass = fet.hub_vertical_mass
-corner_model = corner.corner_model(car, hub, rim_side_mass)
-sections = modal_sections(ru.assemble_fixed_hub(fits))
+setup = ru.experiments.corner_setup(car)
+tire, static, fits, hub, corner_model = setup.tire, setup.static, setup.fits, setup.hub, setup.model
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -131,7 +121,7 @@ sections = modal_sections(ru.assemble_fixed_hub(fits))
 poles = np.linalg.eigvals(corner_model.A)
 print(
     f"tire {tire.name}: fixed-hub model {len(fits)} tasselli x {fits.n_poles} states; corner model "
-    f"{corner_model.nstates} states (car {vehicle.vehicle_statespace(car).nstates} + G_H {hub.n_poles})"
+    f"{corner_model.nstates} states (car {ru.vehicle.vehicle_statespace(car).nstates} + G_H {hub.n_poles})"
 )
 print(f"corner stable: {bool(np.all(poles.real < 0))}; body bounce {np.sort(np.abs(poles))[0] / (2 * np.pi):.2f} Hz")
 
@@ -143,24 +133,16 @@ print(f"corner stable: {bool(np.all(poles.real < 0))}; body bounce {np.sort(np.a
 
 # %%
 # NBVAL_IGNORE_OUTPUT
-# One run per texture: road -> tassello inputs -> F_F -> corner; timed
-speed, sample_rate = speed_kmh / 3.6, road_test["sample_rate"]
-runs, timings = {}, {}
-for name in texture_names:
-    start = time.perf_counter()
-    road = texture_input(static, textures.load_texture(name), speed, duration, seed, sample_rate=sample_rate)
-    runs[name] = corner.run_corner(sections, corner_model, road)
-    timings[name] = time.perf_counter() - start
-print("road to time histories: " + ", ".join(f"{k} {v:.2f} s" for k, v in timings.items()))
-
-# %%
-# Welch spectra (2 Hz resolution, Hann, 50 % overlap, first 0.5 s dropped)
-spectra = {name: corner.spectra(run) for name, run in runs.items()}
+# One run per texture: road -> tassello inputs -> F_F -> corner -> Welch spectra (2 Hz resolution,
+# Hann, 50 % overlap, first 0.5 s dropped); timed
+drive = ru.experiments.quarter_car(setup, road_test)
+spectra = drive.spectra
 f_psd = spectra[texture_names[0]]["a_hub"][0]
+print("road to time histories: " + ", ".join(f"{k} {v:.2f} s" for k, v in drive.seconds.items()))
 
 # %%
 # Fig. 11 analogue: hub acceleration spectra, rough vs smooth
-ax = plotting.plot_spectra(
+ax = ru.figures.quarter_car.plot_spectra(
     f_psd, {name: s["a_hub"][1] for name, s in spectra.items()}, "hub acceleration ASD ((m/s²)/√Hz)", (0.0, band)
 )
 ax.set_title("Fig. 11 analogue: spectrum of hub accelerations on two road textures (120 km/h)")
@@ -168,7 +150,7 @@ plt.show()
 
 # %%
 # Fig. 12 analogue: upper-mount acceleration spectra, rough vs smooth
-ax = plotting.plot_spectra(
+ax = ru.figures.quarter_car.plot_spectra(
     f_psd,
     {name: s["a_mount"][1] for name, s in spectra.items()},
     "upper-mount acceleration ASD ((m/s²)/√Hz)",
@@ -182,9 +164,9 @@ plt.show()
 # Where the acceleration power is: share below 50 Hz and 120-250 Hz, hub vs upper mount
 for name, s in spectra.items():
     for out, spectrum in s.items():
-        low_share = corner.power_share(spectrum, 0.0, 50.0, band=(2.0, band))
-        high_share = corner.power_share(spectrum, 120.0, band, band=(2.0, band))
-        rms = corner.band_rms(spectrum, band=(2.0, band))
+        low_share = ru.vehicle.spectra.power_share(spectrum, 0.0, 50.0, band=(2.0, band))
+        high_share = ru.vehicle.spectra.power_share(spectrum, 120.0, band, band=(2.0, band))
+        rms = ru.vehicle.spectra.band_rms(spectrum, band=(2.0, band))
         print(
             f"{name:7s} {out:8s}: {low_share:5.1%} below 50 Hz, {high_share:5.1%} in 120-{band:.0f} Hz, RMS {rms:6.2f} m/s^2"
         )
@@ -205,12 +187,8 @@ for name, s in spectra.items():
 # NBVAL_IGNORE_OUTPUT
 # 2D roads: time domain (Welch) vs frequency domain, hub and upper mount
 f_check = np.arange(2.0, band + 1.0, 1.0)
-predicted, welch_2d = {}, {}
-for name in texture_names:
-    spectrum = textures.load_texture(name)
-    road = texture_input(static, spectrum, speed, duration, seed, lateral=False, sample_rate=sample_rate)
-    welch_2d[name] = corner.spectra(corner.run_corner(sections, corner_model, road))
-    predicted[name] = corner.predicted_psd(f_check, fits.responses(f_check), static, spectrum, speed, corner_model)
+welch_2d = ru.experiments.quarter_car(setup, road_test, lateral=False).spectra
+predicted = {name: setup.predicted(f_check, sp, road_test.speed) for name, sp in road_test.spectra().items()}
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -218,14 +196,14 @@ for name in texture_names:
 octaves = [(10, 20), (20, 40), (40, 80), (80, 160), (160, 250)]
 for name in texture_names:
     for out in ("a_hub", "a_mount"):
-        ratios = corner.band_power_ratios(welch_2d[name][out], f_check, predicted[name][out], octaves)
+        ratios = ru.vehicle.spectra.band_power_ratios(welch_2d[name][out], f_check, predicted[name][out], octaves)
         print(f"{name:7s} {out:8s}: " + " ".join(f"{r:.2f}" for r in ratios))
         assert all(0.8 < r < 1.2 for r in ratios)  # one realisation; 2 Hz Welch leakage fills the notches
 
 # %%
 # Time domain (Welch) and frequency domain on one plot: rough 2D road
 f, p = welch_2d["rough"]["a_hub"]
-ax = plotting.plot_spectra(
+ax = ru.figures.quarter_car.plot_spectra(
     f,
     {"time domain (Welch)": p},
     "hub acceleration ASD ((m/s²)/√Hz)",
@@ -246,11 +224,11 @@ plt.show()
 
 # %%
 # Fig. 14 analogue: hub acceleration 40-220 Hz, the four peaks matched with the tire's vertical modes
-identified = pipeline.modal(tire).identification
+identified = ru.stages.modal_reduction(tire).identification
 in_band = (f_check >= 40) & (f_check <= 220)
 peaks, _ = ru.analysis.resonance_peaks(f_check[in_band], np.sqrt(predicted["rough"]["a_hub"][in_band]), min_ratio=0.0)
 f3, p3 = spectra["rough"]["a_hub"]
-ax = plotting.plot_spectra(
+ax = ru.figures.quarter_car.plot_spectra(
     f3, {"rough, 3D road (time domain)": p3}, "hub acceleration ASD ((m/s²)/√Hz)", (40.0, 220.0), log=True
 )
 for k, fp in enumerate(peaks[:4]):
@@ -273,10 +251,12 @@ assert len(peaks) >= 4
 # %%
 # NBVAL_IGNORE_OUTPUT
 # 10 s at 120 km/h sampled at 10 kHz, road to spectra (the goal: < 2 s on 2 cores)
+one_texture = ru.experiments.road_test_conditions(speed_kmh, texture_names[:1], duration, seed)
 start = time.perf_counter()
-road = texture_input(static, textures.load_texture(texture_names[0]), speed, duration, seed, sample_rate=sample_rate)
-_ = corner.spectra(corner.run_corner(sections, corner_model, road))
-print(f"{road.u.shape[1]} samples x {road.u.shape[0]} tasselli, road to spectra: {time.perf_counter() - start:.2f} s")
+run = ru.experiments.quarter_car(setup, one_texture).runs[texture_names[0]]
+print(
+    f"{run.road.u.shape[1]} samples x {run.road.u.shape[0]} tasselli, road to spectra: {time.perf_counter() - start:.2f} s"
+)
 
 # %% [markdown]
 # ## 7. Paper vs ours
@@ -309,10 +289,12 @@ from ipywidgets import Dropdown, FloatSlider, IntSlider, interact
 
 
 def show_corner(speed_kmh, texture, seed):
-    road = texture_input(static, textures.load_texture(texture), speed_kmh / 3.6, 4.0, seed, lateral=False)
-    s = corner.spectra(corner.run_corner(sections, corner_model, road))
+    test = ru.experiments.road_test_conditions(
+        speed_kmh, [texture], 4.0, seed, ru.road.sample_rate_for(speed_kmh / 3.6)
+    )
+    s = ru.experiments.quarter_car(setup, test, lateral=False).spectra[texture]
     curves = {"hub": s["a_hub"][1], "upper mount": s["a_mount"][1]}
-    plotting.plot_spectra(s["a_hub"][0], curves, "acceleration ASD ((m/s²)/√Hz)", (0.0, band), log=True)
+    ru.figures.quarter_car.plot_spectra(s["a_hub"][0], curves, "acceleration ASD ((m/s²)/√Hz)", (0.0, band), log=True)
     plt.show()
 
 

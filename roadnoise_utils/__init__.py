@@ -5,58 +5,69 @@ Public entry points (DESIGN section 6)::
     import roadnoise_utils as ru
     tire   = ru.load_tire("165_65R14")          # validated TireSpec from data/tires/*.toml
     fet    = ru.build_fet(tire)                 # FETModel: sparse M, K(omega), DOF maps
-    static = ru.solve_static(fet, road="flat")  # or road="drum": footprint, pressures, tasselli
+    static = ru.solve_static(fet, road="flat")  # or road="drum" (the paper's drum): footprint, tasselli
     visco  = ru.frf_visco(fet, static, freqs)   # direct FRFs: H_tot, H_i, G_H (fixed hub)
     reduced = ru.modal_reduction(fet, static, visco=visco)  # damping id., frozen modes, modal H_i
     fits   = ru.fit_tasselli(visco.freqs, visco.H, n_poles=14)  # one rational fit per tassello (Eq. 1)
     tire_F = ru.assemble_fixed_hub(fits)        # python-control StateSpace (A_F, B_F, C_F, D_F), Eq. 3-4
-    u      = ru.cleat_input(static, speed=30/3.6)  # RoadInput: t, u[tassello, t] (cleat on the drum)
+    u      = ru.cleat_input(static, speed=30/3.6)  # RoadInput: t, u[tassello, t] (the paper's cleat)
     force  = ru.simulate(tire_F, u)             # fast LTI simulation: hub force (N) vs time/distance
+    run    = ru.experiments.cleat_test("165_65R14")   # the paper's test, conditions resolved once
 
-Cached stage results for the notebooks: :mod:`roadnoise_utils.pipeline`.
+The package, one folder per stage, data flowing one way:
+
+* :mod:`.tire` — spec, the ring FE model, statics, tasselli (stages 1-2)
+* :mod:`.response` — direct FRFs, modes, modal reduction, FE reference solves (stages 3-5)
+* :mod:`.rm` — fits, state space (fixed and moving hub), simulation (stages 6-9)
+* :mod:`.road` — tassello inputs from cleats, textures and road files (stage 11)
+* :mod:`.vehicle` — quarter car, corner coupling, spectra (stages 10, 12)
+* :mod:`.experiments` — the paper's tests, reading ``data/conditions`` once
+* :mod:`.figures` — one module per notebook
+* :mod:`.repro` — paths, the stage cache, :mod:`.stages` (cached stage functions), claims,
+  the collection, the reproduce command (``python -m roadnoise_utils``)
 """
 
-from . import analysis, claims, cleat, conditions, corner, movinghub, peers, pipeline, textures, vehicle
-from .calibration import calibration_table
-from .fet import FETModel, build_fet
-from .fitting import FitSet, RationalFit, fit_tasselli, vector_fit
-from .frf import FRFResult, frf_visco
-from .modal import ModalReduction, identify_modes, modal_reduction
-from .modes import LoadedModes, loaded_modes
-from .ring import ring_check, ring_frequencies, ring_parameters
-from .road import RoadInput, cleat_input
-from .simulation import SimulationResult, simulate
-from .statespace import assemble_fixed_hub, realize
-from .static import StaticState, load_deflection, solve_static
-from .style import set_style
-from .tasselli import Tasselli
-from .tire_spec import TireSpec, load_tire
+from . import analysis, experiments, figures, response, rm, road, tire, vehicle
+from .experiments.paper_defaults import cleat_input, solve_static
+from .repro import cache, claims, collection, stages
+from .repro.style import set_style
+from .response.frf import FRFResult, frf_visco
+from .response.modal_reduction import ModalReduction, identify_modes, modal_reduction
+from .response.modes import LoadedModes, loaded_modes
+from .rm.fitting import FitSet, RationalFit, fit_tasselli, vector_fit
+from .rm.realisation import assemble_fixed_hub, realize
+from .rm.simulation import SimulationResult, simulate
+from .road import textures
+from .road.input import RoadInput
+from .tire.closed_form import ring_check, ring_frequencies, ring_parameters
+from .tire.ring_model import FETModel, build_fet
+from .tire.spec import TireSpec, load_tire
+from .tire.static import StaticState, load_deflection
+from .tire.tasselli import Tasselli
 
 __version__ = "0.1.0"
 
 __all__ = [
-    "analysis",
-    "claims",
-    "cleat",
-    "conditions",
-    "corner",
-    "movinghub",
-    "peers",
     "FETModel",
     "FRFResult",
     "FitSet",
+    "LoadedModes",
+    "ModalReduction",
     "RationalFit",
     "RoadInput",
     "SimulationResult",
-    "LoadedModes",
-    "ModalReduction",
     "StaticState",
     "Tasselli",
     "TireSpec",
+    "analysis",
     "assemble_fixed_hub",
     "build_fet",
-    "calibration_table",
+    "cache",
+    "claims",
     "cleat_input",
+    "collection",
+    "experiments",
+    "figures",
     "fit_tasselli",
     "frf_visco",
     "identify_modes",
@@ -64,15 +75,19 @@ __all__ = [
     "load_tire",
     "loaded_modes",
     "modal_reduction",
-    "pipeline",
-    "textures",
-    "vehicle",
     "realize",
+    "response",
     "ring_check",
     "ring_frequencies",
     "ring_parameters",
+    "rm",
+    "road",
     "set_style",
     "simulate",
     "solve_static",
+    "stages",
+    "textures",
+    "tire",
     "vector_fit",
+    "vehicle",
 ]

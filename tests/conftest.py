@@ -1,4 +1,5 @@
-"""Shared fixtures: the paper's tire at its default mesh and a coarse copy for fast property tests."""
+"""Shared fixtures: the paper's tire at its default mesh, a coarse copy for fast property tests, and the
+cached RM stages the tests of several folders use."""
 
 from __future__ import annotations
 
@@ -25,6 +26,7 @@ def flat(fet):
 
 @pytest.fixture(scope="session")
 def drum(fet):
+    """On the paper's drum (``ru.solve_static`` takes its radius from the cleat test's conditions)."""
     return ru.solve_static(fet, road="drum")
 
 
@@ -42,3 +44,25 @@ def coarse_fet(coarse_tire):
 @pytest.fixture(scope="session")
 def coarse_flat(coarse_fet):
     return ru.solve_static(coarse_fet, road="flat")
+
+
+@pytest.fixture(scope="session")
+def paper_fits(tire):
+    """The paper tire's tassello fits on the flat road (cached stage)."""
+    return ru.stages.fit_tasselli(tire)
+
+
+@pytest.fixture(scope="session")
+def drum_tire(tire):
+    """The paper tire on the paper's drum: static state, fixed-hub state space and its modal sections."""
+    drum_radius = ru.experiments.cleat_conditions().drum_radius
+    static = ru.stages.solve_static(tire, road="drum", drum_radius=drum_radius)
+    system = ru.stages.assemble_fixed_hub(tire, road="drum", drum_radius=drum_radius)
+    return static, system, ru.rm.modal_sections(system)
+
+
+@pytest.fixture(scope="session")
+def car_tire():
+    """The paper's car corner: (vehicle, FE tire, static state, tassello fits, hub fit, rim-side mass)."""
+    setup = ru.experiments.corner_setup()
+    return setup.vehicle, ru.build_fet(setup.tire), setup.static, setup.fits, setup.hub, setup.tire_hub_mass

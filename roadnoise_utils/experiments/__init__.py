@@ -1,0 +1,50 @@
+"""The paper's tests, each reading its ``data/conditions`` file once and returning a typed result.
+
+=============================  ===============================================  ==========
+experiment                     what it runs                                     notebook
+=============================  ===============================================  ==========
+:func:`cleat_test`             drum cleat, quasi-static and dynamic, FE check   04
+:func:`moving_hub_check`       RM moving hub vs the FE tire with its hub free   05
+:func:`road_test`              textures flowing through the footprint           06
+:func:`quarter_car`            the corner on the road test, spectra             07
+:func:`calibration_table`      the tire against its calibration targets         01
+=============================  ===============================================  ==========
+
+``*_conditions`` functions resolve a test's defaults (an argument left at ``None`` is the
+paper's value); the numerics below them take explicit arguments and read no TOML.
+"""
+
+from . import calibration, cleat, conditions, corner, moving_hub, paper_defaults, road
+from .calibration import calibration_table
+from .cleat import CleatConditions, CleatRun, CleatTest, cleat_conditions, cleat_test
+from .corner import CornerSetup, QuarterCarTest, corner_setup, quarter_car
+from .moving_hub import MovingHubCheck, Suspension, moving_hub_check, suspension_conditions
+from .road import RoadTest, RoadTestConditions, road_test, road_test_conditions
+
+__all__ = [
+    "CleatConditions",
+    "CleatRun",
+    "CleatTest",
+    "CornerSetup",
+    "MovingHubCheck",
+    "QuarterCarTest",
+    "RoadTest",
+    "RoadTestConditions",
+    "Suspension",
+    "calibration",
+    "calibration_table",
+    "cleat",
+    "cleat_conditions",
+    "cleat_test",
+    "conditions",
+    "corner",
+    "corner_setup",
+    "moving_hub",
+    "moving_hub_check",
+    "paper_defaults",
+    "quarter_car",
+    "road",
+    "road_test",
+    "road_test_conditions",
+    "suspension_conditions",
+]

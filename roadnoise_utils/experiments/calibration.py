@@ -1,0 +1,75 @@
+"""Calibration of a FET against its targets (DESIGN section 2): the "target / obtained" table.
+
+Targets live in ``data/calibration/<tire>.toml`` (a range and a source for each quantity);
+the obtained values are computed from the static state and the direct FRF of the tire.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pandas as pd
+
+from ..analysis import resonance_peaks
+from ..repro import stages
+from ..repro.paths import data_dir, read_toml
+from ..tire.spec import TireSpec
+
+
+def calibration_targets(tire: str) -> dict:
+    """Targets of a tire (file stem in ``data/calibration``); empty when the tire has none."""
+    path = data_dir() / "calibration" / f"{tire}.toml"
+    if not path.exists():
+        return {}
+    return read_toml(path)
+
+
+def calibration_values(tire: str | TireSpec) -> dict[str, float]:
+    """The calibrated quantities of a tire, in the targets' units."""
+    static = stages.solve_static(tire, "flat")
+    frf = stages.frf_visco(tire, "flat")
+    peaks, _ = resonance_peaks(frf.freqs, frf.H_tot)
+    t = static.tasselli
+    return {
+        "vertical_stiffness": static.vertical_stiffness / 1e3,
+        "first_vertical_resonance": float(peaks[0]) if peaks.size else float("nan"),
+        "footprint_length": static.footprint_length * 1e3,
+        "footprint_width": static.footprint_width * 1e3,
+        "n_tasselli": t.n,
+        "max_tassello_size": max(t.length.max(), t.width.max()) * 1e3,
+    }
+
+
+def calibration_table(tire: str | TireSpec = "165_65R14") -> pd.DataFrame:
+    """Table "quantity / target / obtained / unit / ok / source" of the tire's calibration.
+
+    A tire without ``data/calibration/<tire>.toml`` gets the obtained values only (target
+    ``-``, ok ``True``): copy and edit a targets file to check your own tire.
+    """
+    spec = stages.load_tire(tire)
+    targets = calibration_targets(Path(spec.source.split(" ")[0]).stem)
+    values = calibration_values(spec)
+    rows = []
+    for name, value in values.items():
+        t = targets.get(name)
+        rows.append(
+            {
+                "quantity": name.replace("_", " "),
+                "target": f"{t['low']:g} - {t['high']:g}" if t else "-",
+                "obtained": value,
+                "unit": t["unit"] if t else _UNITS[name],
+                "ok": bool(t["low"] <= value <= t["high"]) if t else True,
+                "source": t["source"] if t else "no targets for this tire",
+            }
+        )
+    return pd.DataFrame(rows).set_index("quantity")
+
+
+_UNITS = {
+    "vertical_stiffness": "N/mm",
+    "first_vertical_resonance": "Hz",
+    "footprint_length": "mm",
+    "footprint_width": "mm",
+    "n_tasselli": "-",
+    "max_tassello_size": "mm",
+}

@@ -1,0 +1,137 @@
+"""The quarter car on the road test: the moving-hub tire on a vehicle corner (paper Eq. 8, Fig. 10-14).
+
+:func:`corner_setup` builds, once, what every corner computation needs — the vehicle file, its
+tire's cached stages (loaded state, tassello fits, hub fit), the corner model closed through
+:math:`G_H` and the fast form of the fixed-hub tire; :func:`quarter_car` drives it over each
+texture of the road test (:mod:`.road`) and returns the time histories and Welch spectra.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+
+import control
+import numpy as np
+
+from ..repro import stages
+from ..rm.fitting import FitSet
+from ..rm.realisation import assemble_fixed_hub
+from ..rm.simulation import ModalSections, modal_sections
+from ..road.textures import RoadSpectrum
+from ..tire.spec import TireSpec
+from ..tire.static import StaticState
+from ..vehicle.corner import CornerRun, corner_model, predicted_psd, run_corner, spectra
+from ..vehicle.quarter_car import QuarterCar, load_vehicle
+from .road import RoadTestConditions, road_test_conditions, texture_run
+
+#: The paper's car (195/65 R15) as our vehicle file.
+PAPER_CAR = "midsize_195_65R15"
+
+Spectrum = tuple[np.ndarray, np.ndarray]
+
+
+@dataclass(frozen=True, eq=False)
+class CornerSetup:
+    """A vehicle corner with its RM tire, ready to be driven.
+
+    Attributes
+    ----------
+    vehicle : QuarterCar
+        The corner (``data/vehicles``).
+    tire : TireSpec
+        Its tire.
+    static : StaticState
+        The tire loaded on the flat road.
+    fits, hub : FitSet
+        Tassello fits (Eq. 1) and the hub fit :math:`G_H` (Eq. 6).
+    tire_hub_mass : float
+        The FE tire's rim-side mass, added to the hub (kg).
+    model : control.StateSpace
+        The quarter car closed through :math:`G_H`: input :math:`F_F` (N), outputs
+        ``z_hub, a_hub, a_mount``.
+    sections : ModalSections
+        The fixed-hub tire in the form the fast simulation runs.
+    """
+
+    vehicle: QuarterCar
+    tire: TireSpec
+    static: StaticState
+    fits: FitSet
+    hub: FitSet
+    tire_hub_mass: float
+    model: control.StateSpace
+    sections: ModalSections
+
+    def predicted(self, freqs: np.ndarray, spectrum: RoadSpectrum, speed: float) -> dict[str, np.ndarray]:
+        """Frequency-domain PSDs of every corner output for a road uniform across the width (2D), at ``speed`` m/s."""
+        return predicted_psd(freqs, self.fits.responses(freqs), self.static, spectrum, speed, self.model)
+
+
+def corner_setup(vehicle: str | QuarterCar = PAPER_CAR) -> CornerSetup:
+    """The corner of a vehicle file with its tire's cached RM stages."""
+    car = load_vehicle(vehicle) if not isinstance(vehicle, QuarterCar) else vehicle
+    tire = stages.load_tire(car.tire)
+    fits, hub = stages.fit_tasselli(tire), stages.fit_hub(tire)
+    rim_side_mass = stages.build_fet(tire).hub_vertical_mass
+    return CornerSetup(
+        vehicle=car,
+        tire=tire,
+        static=stages.solve_static(tire),
+        fits=fits,
+        hub=hub,
+        tire_hub_mass=rim_side_mass,
+        model=corner_model(car, hub, rim_side_mass),
+        sections=modal_sections(assemble_fixed_hub(fits)),
+    )
+
+
+@dataclass(frozen=True, eq=False)
+class QuarterCarTest:
+    """The corner driven over each texture of the road test.
+
+    Attributes
+    ----------
+    setup : CornerSetup
+        The corner.
+    conditions : RoadTestConditions
+        The resolved road test.
+    runs : dict of str to CornerRun
+        Time histories per texture.
+    spectra : dict of str to dict
+        Welch PSDs per texture: ``"a_hub"`` and ``"a_mount"`` -> (freqs Hz, PSD (m/s^2)^2/Hz).
+    seconds : dict of str to float
+        Wall time from road to time histories, per texture (s).
+    lateral : bool
+        3D roads (one coherent track per belt strip) or uniform across the width.
+    """
+
+    setup: CornerSetup
+    conditions: RoadTestConditions
+    runs: dict[str, CornerRun]
+    spectra: dict[str, dict[str, Spectrum]]
+    seconds: dict[str, float]
+    lateral: bool
+
+
+def quarter_car(
+    vehicle: str | QuarterCar | CornerSetup = PAPER_CAR,
+    conditions: RoadTestConditions | None = None,
+    lateral: bool = True,
+) -> QuarterCarTest:
+    """Drive a corner over every texture of the road test: road -> F_F -> corner -> spectra."""
+    setup = vehicle if isinstance(vehicle, CornerSetup) else corner_setup(vehicle)
+    test = road_test_conditions() if conditions is None else conditions
+    runs, seconds = {}, {}
+    for name, spectrum in test.spectra().items():
+        start = time.perf_counter()
+        runs[name] = run_corner(setup.sections, setup.model, texture_run(setup.static, spectrum, test, lateral))
+        seconds[name] = time.perf_counter() - start
+    return QuarterCarTest(
+        setup=setup,
+        conditions=test,
+        runs=runs,
+        spectra={name: spectra(run) for name, run in runs.items()},
+        seconds=seconds,
+        lateral=lateral,
+    )

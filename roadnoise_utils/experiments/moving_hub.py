@@ -1,0 +1,102 @@
+"""The moving-hub check: the RM moving-hub tire against the FE tire with its hub free (paper Eq. 5-7).
+
+"Owing to the linearity of the model, the force with moving hub :math:`F_M` can be expressed as
+the sum of the force :math:`F_F` due to road unevenness with fixed hub and the force
+:math:`F_H` due to the motion of the hub" (Eq. 5). The check releases the FE tire's hub on a
+suspension to ground (``data/conditions/moving_hub_check.toml``, read once by
+:func:`suspension_conditions`) and compares the hub motion and force, per unit displacement
+of the whole footprint, with the RM model's.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..analysis import relative_rms_error
+from ..repro import stages
+from ..response.fe_reference import fe_moving_hub
+from ..rm.fitting import FitSet
+from ..rm.moving_hub import rm_moving_hub
+from ..tire.spec import TireSpec
+from .conditions import load_conditions, resolve
+
+#: The tire the check runs on by default: the quarter car's.
+CHECK_TIRE = "195_65R15"
+
+
+@dataclass(frozen=True)
+class Suspension:
+    """The hub's suspension to ground in the check: mass (kg, without the tire), stiffness (N/m), damping (N s/m)."""
+
+    mass: float
+    stiffness: float
+    damping: float
+
+
+def suspension_conditions(
+    mass: float | None = None, stiffness: float | None = None, damping: float | None = None
+) -> Suspension:
+    """The check's suspension (``data/conditions/moving_hub_check.toml``, read once), any value given overriding it."""
+    hub = resolve(load_conditions("moving_hub_check"), "hub", mass=mass, stiffness=stiffness, damping=damping)
+    return Suspension(float(hub["mass"]), float(hub["stiffness"]), float(hub["damping"]))
+
+
+@dataclass(frozen=True, eq=False)
+class MovingHubCheck:
+    """FE with a free hub vs the RM moving-hub model, per unit road displacement of the whole footprint.
+
+    Attributes
+    ----------
+    tire : TireSpec
+        The tire.
+    suspension : Suspension
+        The hub's suspension.
+    freqs : ndarray
+        Frequencies (Hz).
+    fe_hub, rm_hub : ndarray (complex)
+        Hub displacement per road displacement (m/m), FE and RM.
+    fe_force, rm_force : ndarray (complex)
+        Hub force :math:`F_M` per road displacement (N/m), FE and RM.
+    fits, hub : FitSet
+        The tassello fits and the hub fit the RM model uses.
+    """
+
+    tire: TireSpec
+    suspension: Suspension
+    freqs: np.ndarray
+    fe_hub: np.ndarray
+    fe_force: np.ndarray
+    rm_hub: np.ndarray
+    rm_force: np.ndarray
+    fits: FitSet
+    hub: FitSet
+
+    def errors(self) -> dict[str, float]:
+        """Relative RMS errors of the RM model against the FE model: hub acceleration and hub force."""
+        omega2 = (2 * np.pi * self.freqs) ** 2
+        return {
+            "hub acceleration": relative_rms_error(omega2 * self.rm_hub, omega2 * self.fe_hub),
+            "hub force F_M": relative_rms_error(self.rm_force, self.fe_force),
+        }
+
+
+def moving_hub_check(
+    tire: str | TireSpec = CHECK_TIRE,
+    freqs: np.ndarray | None = None,
+    suspension: Suspension | None = None,
+) -> MovingHubCheck:
+    """Solve the FE tire with its hub free and the RM moving-hub model (Eq. 5-7) on the same suspension.
+
+    ``freqs`` (Hz) default to 1-250 Hz every 1 Hz; ``suspension`` to :func:`suspension_conditions`.
+    """
+    spec = stages.load_tire(tire)
+    freqs = np.arange(1.0, 251.0) if freqs is None else np.asarray(freqs, float)
+    hub_suspension = suspension_conditions() if suspension is None else suspension
+    values = (hub_suspension.mass, hub_suspension.stiffness, hub_suspension.damping)
+    fet = stages.build_fet(spec)
+    fits, hub = stages.fit_tasselli(spec), stages.fit_hub(spec)
+    fe_hub, fe_force = fe_moving_hub(fet, stages.solve_static(spec), freqs, *values)
+    rm_hub, rm_force = rm_moving_hub(fits, hub, freqs, *values, tire_hub_mass=fet.hub_vertical_mass)
+    return MovingHubCheck(spec, hub_suspension, freqs, fe_hub, fe_force, rm_hub, rm_force, fits, hub)

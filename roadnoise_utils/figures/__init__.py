@@ -1,0 +1,30 @@
+"""The collection's figures, one module per notebook (as ``kf_book/*_internal.py``), shared helpers in ``common``.
+
+Each figure mirrors a figure of the paper where there is one (same axes and units, paper units
+at this edge only) and draws the paper's own numbers as labelled reference lines
+(:func:`.common.paper_lines`).
+"""
+
+from . import (
+    cleat_test,
+    common,
+    fe_tire_model,
+    moving_hub,
+    overview,
+    quarter_car,
+    road_input,
+    superposition,
+    tassello_fitting,
+)
+
+__all__ = [
+    "cleat_test",
+    "common",
+    "fe_tire_model",
+    "moving_hub",
+    "overview",
+    "quarter_car",
+    "road_input",
+    "superposition",
+    "tassello_fitting",
+]

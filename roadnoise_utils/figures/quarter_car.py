@@ -1,0 +1,101 @@
+"""Figures of notebook 07-quarter-car: the quarter car (Fig. 13), transmissibility (Fig. 10), spectra (Fig. 11-12, 14)."""
+
+from __future__ import annotations
+
+import matplotlib.pyplot as plt
+import numpy as np
+from matplotlib.patches import Rectangle
+
+
+def plot_quarter_car_scheme(vehicle) -> plt.Figure:
+    """Fig. 13 analogue: the corner's masses and elements, with the RM tire under the hub."""
+    names = ["body", "tower", "rod", "unsprung"]
+    names = [n for n in names if n in vehicle.masses] + [n for n in vehicle.masses if n not in names]
+    y = {name: 4.0 - 1.2 * k for k, name in enumerate(names)}
+    x = {name: (0.6 if name == "rod" else 0.0) for name in names}
+    fig, ax = plt.subplots(figsize=(6.5, 6))
+    for name in names:
+        ax.add_patch(Rectangle((x[name] - 0.45, y[name] - 0.25), 0.9, 0.5, fc="tab:blue", alpha=0.2, ec="tab:blue"))
+        ax.text(x[name], y[name], f"{name}\n{vehicle.masses[name]:g} kg", ha="center", va="center", fontsize=8)
+    ground_y = y[vehicle.hub] - 2.2
+    ax.add_patch(Rectangle((-0.6, y[vehicle.hub] - 1.55), 1.2, 0.7, fc="0.3", alpha=0.25, ec="k"))
+    ax.text(0, y[vehicle.hub] - 1.2, "RM tire: F_M = F_F + G_H u_H\n(Eq. 5-7)", ha="center", va="center", fontsize=8)
+    ax.plot([-1.2, 1.2], [ground_y, ground_y], color="tab:brown", lw=3)
+    ax.text(0, ground_y - 0.25, "road irregularities → tasselli", ha="center", fontsize=8, color="tab:brown")
+    ax.annotate("", (0, ground_y + 0.05), (0, y[vehicle.hub] - 1.55), arrowprops={"arrowstyle": "-", "ls": ":"})
+    for k, e in enumerate(vehicle.elements):
+        ya, yb = y.get(e.a, ground_y), y.get(e.b, ground_y)
+        xm = -0.65 - 0.42 * (len(vehicle.elements) - 1 - k)
+        ax.plot(
+            [xm, xm],
+            [min(ya, yb) + 0.25, max(ya, yb) - 0.25],
+            color="k",
+            lw=1.0,
+            ls={"spring": "-", "damper": "--", "maxwell": "-."}[e.kind],
+        )
+        value = (
+            f"{e.stiffness / 1e3:g} N/mm"
+            if e.kind == "spring"
+            else f"{e.damping:g} Ns/m"
+            if e.kind == "damper"
+            else f"{e.damping:g} Ns/m + {e.stiffness / 1e3:g} N/mm"
+        )
+        ax.text(
+            xm,
+            max(ya, yb) - 0.2,
+            f"{e.a[:5]}-{e.b[:5]}\n{e.kind}\n{value}",
+            fontsize=5.5,
+            ha="center",
+            va="bottom",
+            rotation=90,
+        )
+    ax.set_xlim(-0.9 - 0.42 * len(vehicle.elements), 1.6)
+    ax.set_ylim(ground_y - 0.5, 4.5)
+    ax.axis("off")
+    fig.suptitle("Fig. 13 analogue: the quarter car (front corner, MacPherson strut)")
+    return fig
+
+
+def plot_transmissibility(
+    freqs: np.ndarray, transmissibility: np.ndarray, bands: dict, ax: plt.Axes | None = None
+) -> plt.Axes:
+    """Fig. 10 analogue: |a_mount / a_hub| with the paper's bands (``vehicle.FrequencyBand``) shaded."""
+    if ax is None:
+        _, ax = plt.subplots(figsize=(8, 4))
+    ax.plot(freqs, np.abs(transmissibility), "k", lw=1.8, label="quarter car (ours)")
+    for band, colour in zip(bands.values(), ["tab:blue", "tab:green", "tab:orange", "tab:purple"], strict=False):
+        ax.axvspan(band.f_low, band.f_high, color=colour, alpha=0.12)
+        ax.text(0.5 * (band.f_low + band.f_high), 1.9, band.label, ha="center", fontsize=8, color=colour)
+    ax.axhline(1.0, color="0.5", lw=0.7, ls=":")
+    ax.set_ylim(0, 2.1)
+    ax.set_xlim(0, 300)
+    ax.set_xlabel("Frequency [Hz]")
+    ax.set_ylabel("|a_upper mount / a_hub|")
+    ax.legend(loc="upper left")
+    return ax
+
+
+def plot_spectra(
+    freqs: np.ndarray,
+    curves: dict[str, np.ndarray],
+    ylabel: str,
+    f_range: tuple[float, float],
+    ax: plt.Axes | None = None,
+    log: bool = False,
+    predicted: dict[str, tuple] | None = None,
+) -> plt.Axes:
+    """Amplitude spectral densities (sqrt of PSD) of a few signals, optionally with predictions."""
+    if ax is None:
+        _, ax = plt.subplots(figsize=(8, 4))
+    for (label, psd), colour in zip(curves.items(), ["tab:red", "tab:blue", "tab:green"]):
+        keep = (freqs >= f_range[0]) & (freqs <= f_range[1])
+        (ax.semilogy if log else ax.plot)(freqs[keep], np.sqrt(psd[keep]), color=colour, lw=1.2, label=label)
+        if predicted and label in predicted:
+            fp, pp = predicted[label]
+            k = (fp >= f_range[0]) & (fp <= f_range[1])
+            (ax.semilogy if log else ax.plot)(fp[k], np.sqrt(pp[k]), "k--", lw=0.8)
+    ax.set_xlim(*f_range)
+    ax.set_xlabel("Frequency (Hz)")
+    ax.set_ylabel(ylabel)
+    ax.legend()
+    return ax

@@ -1,0 +1,54 @@
+"""Where the collection keeps its data, its cache and its figures.
+
+Every location can be overridden by an environment variable, so the package works from an
+editable install in the repository (the normal case) and from anywhere else.
+"""
+
+from __future__ import annotations
+
+import os
+import tomllib
+from pathlib import Path
+
+#: The repository root (the folder holding ``roadnoise_utils/`` and ``data/``).
+REPO_ROOT = Path(__file__).resolve().parents[2]
+
+
+def data_dir() -> Path:
+    """Folder of the data files (``ROADNOISE_DATA_DIR``, default ``<repo>/data``)."""
+    return Path(os.environ.get("ROADNOISE_DATA_DIR", REPO_ROOT / "data"))
+
+
+def cache_dir() -> Path:
+    """Folder of the stage cache (``ROADNOISE_CACHE_DIR``, default ``<repo>/.cache``)."""
+    return Path(os.environ.get("ROADNOISE_CACHE_DIR", REPO_ROOT / ".cache"))
+
+
+def figure_dir() -> Path:
+    """Folder the reproduction writes figures to (``ROADNOISE_FIGURE_DIR``, default ``<repo>/figures``)."""
+    return Path(os.environ.get("ROADNOISE_FIGURE_DIR", REPO_ROOT / "figures"))
+
+
+def data_file(name: str | Path, folder: str, what: str) -> Path:
+    """Resolve a data file: a stem in ``data/<folder>/`` (``"165_65R14"``) or a path to a TOML file.
+
+    Raises
+    ------
+    FileNotFoundError
+        Neither exists; the message lists the available stems. ``what`` names the kind of
+        file in that message (``"tire file"``, ``"road texture"``...).
+    """
+    path = Path(name)
+    if path.suffix == ".toml" and path.exists():
+        return path
+    candidate = data_dir() / folder / f"{name}.toml"
+    if candidate.exists():
+        return candidate
+    available = sorted(p.stem for p in (data_dir() / folder).glob("*.toml"))
+    raise FileNotFoundError(f"no {what} {str(name)!r}: give a path to a .toml file or one of {available}")
+
+
+def read_toml(path: Path) -> dict:
+    """A TOML file as nested dicts."""
+    with open(path, "rb") as fh:
+        return tomllib.load(fh)

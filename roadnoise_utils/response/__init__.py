@@ -1,0 +1,33 @@
+"""Stages 3-5: the loaded tire's response — direct FRFs (FETvisco), modes, modal reduction, FE references.
+
+``loaded`` linearises the tire about its static state (footprint tied to the road) ->
+``frf`` solves the direct FRFs :math:`H_{tot}, H_i, G_H` (paper Eq. (i)) -> ``modes`` (the
+frozen FET70Hz eigenproblem) -> ``modal_reduction`` (damping identification, modal local FRFs,
+paper Fig. 4-5). ``fe_reference`` holds the FE solves every RM-chain result is checked against.
+"""
+
+from . import fe_reference, frf, loaded, modal_reduction, modes
+from .fe_reference import fe_cleat_response, fe_moving_hub, fe_road_response
+from .frf import FRFResult, frf_visco
+from .loaded import LoadedTire, loaded_tire
+from .modal_reduction import ModalReduction, identify_modes
+from .modes import LoadedModes, loaded_modes
+
+__all__ = [
+    "FRFResult",
+    "LoadedModes",
+    "LoadedTire",
+    "ModalReduction",
+    "fe_cleat_response",
+    "fe_moving_hub",
+    "fe_reference",
+    "fe_road_response",
+    "frf",
+    "frf_visco",
+    "identify_modes",
+    "loaded",
+    "loaded_modes",
+    "loaded_tire",
+    "modal_reduction",
+    "modes",
+]

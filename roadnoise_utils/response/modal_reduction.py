@@ -1,0 +1,481 @@
+"""Global damping identification and modal reduction (paper stages 3-5, Fig. 4-5).
+
+The paper avoids a viscoelastic solve per tassello and frequency with a three-step procedure
+(section *The FET Model*, Fig. 4):
+
+1. **Global damping identification.** From the whole-footprint FRF :math:`H_{tot}(\\omega)` of
+   the viscoelastic model (FETvisco) "the damping coefficients of the principal vertical modes
+   have been identified in the frequency range 0-250 Hz".
+2. **Modal reduction.** The moduli are "frozen to the frequency of the most relevant vertical
+   mode (~70 Hz)" (FET70Hz) and the eigenmodes computed.
+3. **Local FRF computation.** Modes + identified damping give every local FRF :math:`H_i`.
+
+**Identification** (:func:`identify_modes`) fits a hysteretic modal model
+
+.. math:: H(\\omega) \\approx \\sum_r \\frac{A_r}{\\omega_r^2 (1 + i\\eta_r) - \\omega^2} + R_0 + R_2\\,\\omega^2
+
+(rubber damping is hysteretic: a loss factor, not a viscous rate), with complex residues
+:math:`A_r` and residual terms for the modes outside the band. The poles
+:math:`(\\omega_r, \\eta_r)` are found by nonlinear least squares with the linear parameters
+projected out (variable projection, Golub & Pereyra 1973); the half-power bandwidth of each
+peak gives an independent estimate of the damping ratio :math:`\\zeta_r \\approx \\eta_r/2`.
+
+**Reduction** (:func:`modal_reduction`). Only modes symmetric fore-aft and left-right move the
+hub vertically (:mod:`.symmetry`), so the modes are computed in that subspace, exactly. Two
+frozen models are offered:
+
+* ``frozen="storage"`` — the paper as written: real modes of the storage stiffness at the
+  reference frequency (FET70Hz has no loss) joined with the identified loss factors for the
+  modes seen in :math:`H_{tot}`, interpolated ones for the others;
+* ``frozen="complex"`` (default) — the complex moduli (storage *and* loss) frozen at the
+  reference frequency. Its complex modes carry the coupling of the rubber losses between
+  modes and the loss of the tread springs that push the footprint, which the individual
+  tasselli need; the identified loss factors are joined to the modes seen in :math:`H_{tot}`
+  (``damping="identified"``, default) or the modes keep their own (``damping="model"``),
+  which checks the identification.
+
+For contact point (or tassello) ``n`` the reduced FRF is
+
+.. math:: H_n(\\omega) = S_n(\\omega) - \\sum_r (K_{hf}\\phi_r)(\\phi_r^T b_n)
+          \\left[\\frac{1}{\\lambda_r - \\omega^2} - \\frac{1}{\\lambda_r}\\right]
+
+with :math:`\\lambda_r` the (complex) eigenvalues and :math:`S_n(\\omega)` the *quasi-static*
+response (no inertia) of the viscoelastic model with the moduli at :math:`\\omega`: the
+residual (static) correction for the truncated modes. :math:`S` is computed at a few anchor
+frequencies (0 Hz included, so :math:`H_n(0)` is exact) and interpolated between them; it is
+smooth because it only follows the rubber moduli. :math:`G_H` has the same form.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+import scipy.sparse.linalg as spla
+from scipy.interpolate import PchipInterpolator
+from scipy.optimize import least_squares
+
+from ..analysis import resonance_peaks
+from ..tire.mode_shapes import lateral_order, wave_numbers
+from ..tire.ring_model import FETModel
+from ..tire.static import StaticState
+from .frf import FRFResult, HubForceSolver, frf_visco
+from .loaded import loaded_tire
+
+
+@dataclass(frozen=True)
+class ModeIdentification:
+    """Modal parameters identified from one FRF (hysteretic damping).
+
+    Attributes
+    ----------
+    freqs : ndarray
+        Natural frequencies :math:`\\omega_r / 2\\pi` (Hz).
+    loss_factor : ndarray
+        Modal loss factors :math:`\\eta_r` (-) from the least-squares fit.
+    damping_half_power : ndarray
+        Damping ratios from the half-power bandwidth of each peak (-), NaN where the peak is
+        not isolated enough to measure it.
+    residues : ndarray, complex
+        :math:`A_r` (N/m rad^2/s^2).
+    residual : tuple of complex
+        :math:`(R_0, R_2)` (N/m, N s^2/m).
+    band : tuple of float
+        Frequency band of the fit (Hz).
+    rms_error : float
+        Relative RMS error of the fit over the band (-).
+    """
+
+    freqs: np.ndarray
+    loss_factor: np.ndarray
+    damping_half_power: np.ndarray
+    residues: np.ndarray
+    residual: tuple[complex, complex]
+    band: tuple[float, float]
+    rms_error: float
+
+    @property
+    def damping(self) -> np.ndarray:
+        """Equivalent damping ratios :math:`\\zeta_r = \\eta_r / 2` (-)."""
+        return 0.5 * self.loss_factor
+
+    @property
+    def static_share(self) -> np.ndarray:
+        """Static contribution of each mode :math:`\\mathrm{Re}[A_r / \\omega_r^2(1 + i\\eta_r)]` (N/m)."""
+        return np.real(self.residues / ((2 * np.pi * self.freqs) ** 2 * (1 + 1j * self.loss_factor)))
+
+    def evaluate(self, freqs: np.ndarray) -> np.ndarray:
+        """The fitted FRF at ``freqs`` (Hz)."""
+        basis = _basis(2 * np.pi * np.asarray(freqs, float), 2 * np.pi * self.freqs, self.loss_factor)
+        return basis @ np.concatenate([self.residues, self.residual])
+
+    def table(self, total_static: complex | None = None) -> pd.DataFrame:
+        """Modes: frequency, damping ratio (fit, half-power), static share (N/mm, share of ``total_static``)."""
+        out = pd.DataFrame(
+            {
+                "frequency (Hz)": self.freqs,
+                "damping ratio (fit, eta/2)": self.damping,
+                "damping ratio (half-power)": self.damping_half_power,
+                "static share (N/mm)": self.static_share / 1e3,
+            },
+            index=pd.Index(np.arange(1, self.freqs.size + 1), name="mode"),
+        )
+        if total_static is not None:
+            out["share of H(0)"] = self.static_share / np.real(total_static)
+        return out
+
+
+def _basis(omega: np.ndarray, omega_r: np.ndarray, eta: np.ndarray) -> np.ndarray:
+    den = (omega_r**2 * (1 + 1j * eta))[None, :] - omega[:, None] ** 2
+    return np.column_stack([1.0 / den, np.ones_like(omega), omega**2])
+
+
+def _half_power_damping(freqs: np.ndarray, mag: np.ndarray, f_peak: float) -> float:
+    """Half-power bandwidth estimate zeta = (f2 - f1) / (2 f_peak), or NaN if not measurable."""
+    i = int(np.argmin(np.abs(freqs - f_peak)))
+    level = mag[i] / np.sqrt(2.0)
+    lo = i
+    while lo > 0 and mag[lo] > level:
+        lo -= 1
+    hi = i
+    while hi < mag.size - 1 and mag[hi] > level:
+        hi += 1
+    if lo == 0 or hi == mag.size - 1 or np.any(np.diff(mag[lo : i + 1]) < 0) or np.any(np.diff(mag[i : hi + 1]) > 0):
+        return float("nan")  # another peak or a valley inside the half-power band
+    f1 = np.interp(level, [mag[lo], mag[lo + 1]], [freqs[lo], freqs[lo + 1]])
+    f2 = np.interp(level, [mag[hi], mag[hi - 1]], [freqs[hi], freqs[hi - 1]])
+    return float((f2 - f1) / (2 * f_peak))
+
+
+def identify_modes(
+    freqs: np.ndarray, frf: np.ndarray, f_max: float = 250.0, min_ratio: float = 2.0
+) -> ModeIdentification:
+    """Identify the resonant modes of an FRF in ``[0, f_max]`` Hz by modal least squares.
+
+    Parameters
+    ----------
+    freqs : ndarray
+        Frequencies (Hz), strictly increasing.
+    frf : ndarray, complex
+        The FRF (e.g. :math:`H_{tot}`, N/m).
+    f_max : float
+        Upper end of the fitted band (Hz); paper: 250 Hz.
+    min_ratio : float
+        A peak counts as a mode when ``|frf|`` there exceeds ``min_ratio * |frf(f_0)|``.
+    """
+    freqs = np.asarray(freqs, float)
+    frf = np.asarray(frf, complex)
+    if freqs.shape != frf.shape or freqs.ndim != 1:
+        raise ValueError("freqs and frf must be 1-D arrays of the same length")
+    if not np.all(np.isfinite(frf)) or not np.all(np.diff(freqs) > 0):
+        raise ValueError("frf must be finite and freqs strictly increasing")
+    peaks, _ = resonance_peaks(freqs, frf, min_ratio)
+    peaks = peaks[peaks <= f_max]
+    if peaks.size == 0:
+        raise ValueError(f"no resonance peak in 0-{f_max:g} Hz above {min_ratio} x |H(0)|")
+    hp = np.array([_half_power_damping(freqs, np.abs(frf), f) for f in peaks])
+    band = freqs <= f_max
+    omega = 2 * np.pi * freqs[band]
+    data = frf[band]
+    weight = 1.0 / np.maximum(np.abs(data), 1e-3 * np.abs(data).max())
+    n = peaks.size
+
+    def solve_linear(params: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        basis = _basis(omega, params[:n], params[n:])
+        weighted = basis * weight[:, None]
+        scale = np.linalg.norm(weighted, axis=0)  # equilibrate the columns (1/den ~ 1e-6, w^2 ~ 1e6)
+        coef, *_ = np.linalg.lstsq(weighted / scale, data * weight, rcond=None)
+        return coef / scale, basis
+
+    def residual(params: np.ndarray) -> np.ndarray:
+        coef, basis = solve_linear(params)
+        r = (basis @ coef - data) * weight
+        return np.concatenate([r.real, r.imag])
+
+    omega0 = 2 * np.pi * peaks
+    eta0 = np.clip(np.where(np.isfinite(hp), 2 * hp, 0.05), 4e-3, 0.6)
+    fit = least_squares(
+        residual,
+        np.concatenate([omega0, eta0]),
+        bounds=(np.concatenate([omega0 * 0.9, np.full(n, 1e-4)]), np.concatenate([omega0 * 1.1, np.full(n, 1.0)])),
+        x_scale=np.concatenate([omega0, np.full(n, 0.02)]),
+        ftol=1e-12,
+        xtol=1e-12,
+        gtol=1e-12,
+        max_nfev=2000,
+    )
+    coef, basis = solve_linear(fit.x)
+    err = np.sqrt(np.mean(np.abs(basis @ coef - data) ** 2) / np.mean(np.abs(data) ** 2))
+    return ModeIdentification(
+        freqs=fit.x[:n] / (2 * np.pi),
+        loss_factor=fit.x[n:],
+        damping_half_power=hp,
+        residues=coef[:n],
+        residual=(complex(coef[n]), complex(coef[n + 1])),
+        band=(float(freqs[band][0]), float(f_max)),
+        rms_error=float(err),
+    )
+
+
+@dataclass(frozen=True, eq=False)
+class ModalModel:
+    """The reduced tire: frozen modes, identified damping, quasi-static residual correction.
+
+    Attributes
+    ----------
+    reference_frequency : float
+        Frequency at which the moduli are frozen (Hz).
+    frozen : str
+        ``"complex"`` or ``"storage"`` (see the module docstring).
+    eigenvalues : ndarray (n_modes,), complex
+        :math:`\\lambda_r = \\omega_r^2 (1 + i\\eta_r)` used by the model (rad^2/s^2).
+    damping_source : ndarray of str
+        ``"identified"`` (loss factor from :math:`H_{tot}`), ``"frozen model"`` or ``"interpolated"``.
+    hub_gain : ndarray (n_modes,), complex
+        :math:`K_{hf}\\phi_r` (N/m per unit modal coordinate).
+    point_gain : ndarray (n_modes, n_contact), complex
+        :math:`\\phi_r^T b_n` (N/m per unit modal coordinate).
+    anchor_freqs : ndarray (n_anchor,)
+        Frequencies of the quasi-static solves (Hz), 0 Hz first.
+    anchor_points : ndarray (n_anchor, n_contact), complex
+        Quasi-static response :math:`S_n` (no inertia, moduli at the anchor) (N/m).
+    anchor_hub : ndarray (n_anchor,), complex
+        Quasi-static :math:`G_H` at the anchors (N/m).
+    membership : ndarray (n_tasselli, n_contact)
+        Which contact points each tassello moves.
+    """
+
+    reference_frequency: float
+    frozen: str
+    eigenvalues: np.ndarray
+    damping_source: np.ndarray
+    hub_gain: np.ndarray
+    point_gain: np.ndarray
+    anchor_freqs: np.ndarray
+    anchor_points: np.ndarray
+    anchor_hub: np.ndarray
+    membership: np.ndarray
+
+    @property
+    def freqs(self) -> np.ndarray:
+        """Natural frequencies :math:`\\sqrt{\\mathrm{Re}\\,\\lambda_r}/2\\pi` (Hz)."""
+        return np.sqrt(self.eigenvalues.real) / (2 * np.pi)
+
+    @property
+    def loss_factor(self) -> np.ndarray:
+        """Modal loss factors :math:`\\mathrm{Im}\\,\\lambda_r / \\mathrm{Re}\\,\\lambda_r` (-)."""
+        return self.eigenvalues.imag / self.eigenvalues.real
+
+    def _residual(self, freqs: np.ndarray, anchors: np.ndarray) -> np.ndarray:
+        """Quasi-static anchors interpolated to ``freqs`` (PCHIP on real and imaginary parts)."""
+        if self.anchor_freqs.size == 1:
+            return np.repeat(anchors[:1], freqs.size, axis=0)
+        clipped = np.clip(freqs, self.anchor_freqs[0], self.anchor_freqs[-1])
+        re = PchipInterpolator(self.anchor_freqs, anchors.real, axis=0)(clipped)
+        im = PchipInterpolator(self.anchor_freqs, anchors.imag, axis=0)(clipped)
+        return re + 1j * im
+
+    def frf(self, freqs: np.ndarray) -> FRFResult:
+        """Local FRFs, :math:`H_{tot}` and :math:`G_H` of the reduced model at ``freqs`` (Hz)."""
+        freqs = np.asarray(freqs, float)
+        w2 = (2 * np.pi * freqs)[None, :] ** 2
+        lam = self.eigenvalues[:, None]
+        dyn = 1.0 / (lam - w2) - 1.0 / lam  # (modes, freqs): mode-acceleration form
+        coupling = self.point_gain * self.hub_gain[:, None]  # (modes, points)
+        points = self._residual(freqs, self.anchor_points).T - coupling.T @ dyn
+        hub = self._residual(freqs, self.anchor_hub[:, None])[:, 0] + (self.hub_gain**2) @ dyn
+        tasselli = self.membership @ points
+        return FRFResult(
+            freqs=freqs,
+            H=tasselli,
+            H_tot=tasselli.sum(axis=0),
+            G_H=hub,
+            H_points=points,
+            method=f"modal ({self.frozen} moduli frozen at {self.reference_frequency:.1f} Hz, "
+            f"{self.eigenvalues.size} modes, damping from {', '.join(sorted(set(self.damping_source)))})",
+        )
+
+
+@dataclass(frozen=True, eq=False)
+class ModalReduction:
+    """Everything the paper's Fig. 4 procedure produces.
+
+    Attributes
+    ----------
+    identification : ModeIdentification
+        Modes identified from the viscoelastic :math:`H_{tot}` (0-250 Hz).
+    reference_frequency : float
+        Frozen frequency (Hz): the identified mode with the largest static share.
+    model : ModalModel
+        The reduced model.
+    frozen_eigenvalues : ndarray, complex
+        Eigenvalues of the frozen model before the identified damping replaced some loss factors.
+    wave_number, lateral_order : ndarray of int
+        Dominant circumferential wave number and lateral order of each mode.
+    frf : FRFResult
+        The reduced model's FRFs at the requested frequencies.
+    """
+
+    identification: ModeIdentification
+    reference_frequency: float
+    model: ModalModel
+    frozen_eigenvalues: np.ndarray
+    wave_number: np.ndarray
+    lateral_order: np.ndarray
+    frf: FRFResult
+
+    def mode_table(self) -> pd.DataFrame:
+        """Modes of the reduced model with the damping each one was given."""
+        m = self.model
+        return pd.DataFrame(
+            {
+                "frequency (Hz)": m.freqs,
+                "n": self.wave_number,
+                "m": self.lateral_order,
+                "loss factor, frozen model": self.frozen_eigenvalues.imag / self.frozen_eigenvalues.real,
+                "loss factor used": m.loss_factor,
+                "damping from": m.damping_source,
+                "static share (N/mm)": -np.real(m.hub_gain * m.point_gain.sum(axis=1) / m.eigenvalues) / 1e3,
+            },
+            index=pd.Index(np.arange(1, m.freqs.size + 1), name="mode"),
+        )
+
+
+def _frozen_modes(
+    solver: HubForceSolver, omega_ref: float, frozen: str, f_min_top: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """Eigenpairs of the frozen model in the solver's (symmetric) subspace, up to at least ``f_min_top`` Hz."""
+    storage = frozen == "storage"
+    k = solver.stiffness(omega_ref, storage_only=storage)
+    m = solver.mass
+    n_modes = 20
+    while True:
+        n_modes = min(n_modes, k.shape[0] - 2)
+        if storage:
+            vals, vecs = spla.eigsh(k, k=n_modes, M=m, sigma=0.0)
+        else:
+            vals, vecs = spla.eigs(k, k=n_modes, M=m, sigma=0.0)
+        order = np.argsort(vals.real)
+        vals, vecs = vals[order], vecs[:, order]
+        if np.sqrt(vals.real.max()) / (2 * np.pi) >= f_min_top or n_modes >= k.shape[0] - 2:
+            break
+        n_modes += 20
+    keep = np.sqrt(np.abs(vals.real)) / (2 * np.pi) <= f_min_top * 1.25
+    vals, vecs = vals[keep].astype(complex), vecs[:, keep].astype(complex)
+    vecs = vecs / np.sqrt(np.einsum("ir,ir->r", vecs, m @ vecs))  # phi^T M phi = 1 (unconjugated)
+    return vals, solver.basis_matrix @ vecs
+
+
+def _apply_identified_damping(
+    eigenvalues: np.ndarray, hub_gain: np.ndarray, ident: ModeIdentification, frozen: str, f_band: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """Give the identified loss factors to the modes seen in H_tot (matched in order of frequency)."""
+    freqs = np.sqrt(eigenvalues.real) / (2 * np.pi)
+    eta = eigenvalues.imag / eigenvalues.real
+    source = np.full(eigenvalues.size, "frozen model", dtype=object)
+    if frozen == "storage":
+        eta = np.interp(freqs, ident.freqs, ident.loss_factor)  # the paper: no loss in FET70Hz
+        source[:] = "interpolated"
+    visible = np.nonzero((np.abs(hub_gain) > 1e-3 * np.abs(hub_gain).max()) & (freqs <= 1.1 * f_band))[0]
+    for r, k in zip(visible, range(ident.freqs.size)):
+        eta[r] = ident.loss_factor[k]
+        source[r] = "identified"
+    return eigenvalues.real * (1 + 1j * eta), source
+
+
+def modal_reduction(
+    fet: FETModel,
+    static: StaticState,
+    freqs: np.ndarray | None = None,
+    visco: FRFResult | None = None,
+    reference_frequency: float | None = None,
+    frozen: str = "complex",
+    damping: str = "identified",
+    f_band: float = 250.0,
+    anchors: tuple[float, ...] | None = None,
+    progress: bool = False,
+) -> ModalReduction:
+    """The paper's procedure of Fig. 4: identify damping, freeze, reduce, compute local FRFs.
+
+    Parameters
+    ----------
+    fet, static : FETModel, StaticState
+        The tire and its loaded state.
+    freqs : ndarray, optional
+        Frequencies of the returned FRFs (Hz); default those of ``visco``.
+    visco : FRFResult, optional
+        Direct FRFs of the viscoelastic model over at least 0-``f_band`` (computed if not given).
+    reference_frequency : float, optional
+        Frozen frequency (Hz); default the identified vertical mode with the largest static
+        share of :math:`H_{tot}(0)` (the "most relevant vertical mode").
+    frozen : {"complex", "storage"}
+        Freeze the complex moduli (default) or only their storage part (the paper's FET70Hz).
+    damping : {"identified", "model"}
+        Give the modes seen in :math:`H_{tot}` the identified loss factors (default, the paper)
+        or keep the frozen model's own (``frozen="complex"`` only).
+    f_band : float
+        Band of the identification (Hz); modes are kept up to at least ``2 * f_band``.
+    anchors : tuple of float, optional
+        Frequencies (Hz) of the quasi-static solves of the residual correction; default
+        0, 0.1, 0.25, 0.5, 1 and 1.6 times ``f_band``.
+    """
+    if frozen not in ("complex", "storage"):
+        raise ValueError(f"frozen = {frozen!r}: valid values are 'complex' and 'storage'")
+    if damping not in ("model", "identified") or (frozen == "storage" and damping == "model"):
+        raise ValueError(
+            f"damping = {damping!r} with frozen = {frozen!r}: valid are 'model' or 'identified' with "
+            "frozen='complex', and 'identified' with frozen='storage' (the storage model has no loss)"
+        )
+    if not f_band > 0:
+        raise ValueError(f"f_band = {f_band} Hz: valid range is (0, inf)")
+    if visco is None:
+        visco = frf_visco(fet, static, np.arange(0.0, f_band + 1.0, 1.0), progress=progress)
+    ident = identify_modes(visco.freqs, visco.H_tot, f_max=f_band)
+    if reference_frequency is None:
+        reference_frequency = float(ident.freqs[np.argmax(np.abs(ident.static_share))])
+    if not (np.isfinite(reference_frequency) and reference_frequency > 0):
+        raise ValueError(f"reference_frequency = {reference_frequency} Hz: valid range is (0, inf)")
+    anchor_freqs = np.array(anchors if anchors is not None else [0.0, 0.1, 0.25, 0.5, 1.0, 1.6]) * (
+        1.0 if anchors is not None else f_band
+    )
+    if anchor_freqs[0] != 0.0 or np.any(np.diff(anchor_freqs) <= 0):
+        raise ValueError("anchors must start at 0 Hz and increase")
+
+    lt = loaded_tire(fet, static)
+    solver = HubForceSolver(lt)
+    omega_ref = 2 * np.pi * reference_frequency
+    frozen_vals, shapes = _frozen_modes(solver, omega_ref, frozen, 2 * f_band)
+    storage = frozen == "storage"
+    row = lt.hub_row(omega_ref, storage_only=storage)
+    g_tread = fet.modulus_ratio("tread", omega_ref)
+    hub_gain = row @ shapes
+    point_gain = ((g_tread.real if storage else g_tread) * (lt.road_input.T @ shapes)).T
+    if damping == "identified":
+        eigenvalues, source = _apply_identified_damping(frozen_vals, hub_gain, ident, frozen, f_band)
+    else:
+        eigenvalues, source = frozen_vals, np.full(frozen_vals.size, "frozen model", dtype=object)
+    quasi = [solver.solve(2 * np.pi * f, inertia=False) for f in anchor_freqs]
+    model = ModalModel(
+        reference_frequency=float(reference_frequency),
+        frozen=frozen,
+        eigenvalues=eigenvalues,
+        damping_source=source,
+        hub_gain=hub_gain,
+        point_gain=point_gain,
+        anchor_freqs=anchor_freqs,
+        anchor_points=np.array([q["points"] for q in quasi]),
+        anchor_hub=np.array([q["G_H"] for q in quasi]),
+        membership=static.tasselli.membership(),
+    )
+    full_shapes = np.zeros((fet.n_dof, shapes.shape[1]), complex)
+    full_shapes[lt.free] = shapes
+    return ModalReduction(
+        identification=ident,
+        reference_frequency=float(reference_frequency),
+        model=model,
+        frozen_eigenvalues=frozen_vals,
+        wave_number=wave_numbers(fet, full_shapes.real),
+        lateral_order=lateral_order(fet, full_shapes.real),
+        frf=model.frf(visco.freqs if freqs is None else freqs),
+    )

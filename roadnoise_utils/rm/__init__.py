@@ -1,0 +1,39 @@
+"""Stages 6-9: the RM model itself — rational fits, state space (fixed and moving hub), fast simulation.
+
+``fitting`` fits every local FRF with a rational function (paper Eq. 1, relaxed vector
+fitting; ``fitting_peer`` runs scikit-rf on the same data) -> ``realisation`` turns the fits
+into the block-diagonal fixed-hub tire (Eq. 2-4) -> ``moving_hub`` adds :math:`G_H`
+(Eq. 5-7) -> ``simulation`` drives either with tassello inputs in the time domain.
+"""
+
+from . import fitting, fitting_peer, moving_hub, realisation, simulation
+from .fitting import FitSet, RationalFit, fit_tasselli, lowest_order, order_scan, vector_fit
+from .moving_hub import assemble_moving_hub, fit_hub, hub_statespace, rm_moving_hub
+from .realisation import assemble_fixed_hub, frequency_response, realize
+from .simulation import ModalSections, SimulationResult, modal_sections, response, simulate
+
+__all__ = [
+    "FitSet",
+    "ModalSections",
+    "RationalFit",
+    "SimulationResult",
+    "assemble_fixed_hub",
+    "assemble_moving_hub",
+    "fit_hub",
+    "fit_tasselli",
+    "fitting",
+    "fitting_peer",
+    "frequency_response",
+    "hub_statespace",
+    "lowest_order",
+    "modal_sections",
+    "moving_hub",
+    "order_scan",
+    "realisation",
+    "realize",
+    "response",
+    "rm_moving_hub",
+    "simulate",
+    "simulation",
+    "vector_fit",
+]

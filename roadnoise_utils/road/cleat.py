@@ -1,0 +1,79 @@
+"""The cleat: a short obstacle on the drum, flowing through the footprint (paper Fig. 8-9)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..tire.static import StaticState
+from .input import RoadInput, profile_input
+
+
+def cleat_profile(height: float, base: float, shape: str = "triangle"):
+    """Road height of a cleat whose leading edge (met first) is at road coordinate 0, extending to ``base``.
+
+    Shapes: ``"triangle"`` (paper), ``"rectangle"``, ``"half-sine"``.
+    """
+    if not (np.isfinite(height) and height > 0):
+        raise ValueError(f"cleat height = {height} m: valid range is (0, 0.1] m")
+    if height > 0.1:
+        raise ValueError(f"cleat height = {height} m: valid range is (0, 0.1] m")
+    if not (np.isfinite(base) and 0 < base <= 0.5):
+        raise ValueError(f"cleat base = {base} m: valid range is (0, 0.5] m")
+    if shape not in ("triangle", "rectangle", "half-sine"):
+        raise ValueError(f"cleat shape = {shape!r}: valid values are 'triangle', 'rectangle', 'half-sine'")
+
+    def profile(s: np.ndarray) -> np.ndarray:
+        xi = np.asarray(s, dtype=float) / base  # 0 at the leading edge, 1 at the trailing edge
+        inside = (xi >= 0) & (xi <= 1)
+        if shape == "triangle":
+            z = height * (1 - np.abs(2 * xi - 1))
+        elif shape == "rectangle":
+            z = np.full_like(xi, height)
+        else:
+            z = height * np.sin(np.pi * np.clip(xi, 0, 1))
+        return np.where(inside, z, 0.0)
+
+    return profile
+
+
+def cleat_input(
+    static: StaticState,
+    speed: float,
+    height: float,
+    base: float,
+    shape: str = "triangle",
+    distance: tuple[float, float] = (-0.1, 0.5),
+    sample_rate: float | None = None,
+) -> RoadInput:
+    """A cleat on the drum flowing through the footprint (paper Fig. 8-9).
+
+    Parameters
+    ----------
+    static : StaticState
+        The tire loaded on the drum.
+    speed : float
+        Rolling speed (m/s), > 0.
+    height, base : float
+        Cleat height and length along the road (m); the paper's is 15 mm x 15 mm
+        (``data/conditions/cleat_test.toml``, resolved by ``ru.experiments.cleat_conditions``).
+    shape : {"triangle", "rectangle", "half-sine"}
+        Cleat profile (:func:`cleat_profile`).
+    distance : (float, float)
+        Travel range (m), 0 = the cleat's leading edge under the axle; the default runs from
+        0.1 m before to 0.5 m after (the decay).
+    sample_rate : float, optional
+        Samples per second; default :func:`.input.sample_rate_for`.
+
+    Notes
+    -----
+    The drum's curvature is in the static footprint; the cleat height is added normal to the
+    drum surface (vertical to within 0.1 % over the footprint of a 1.25 m drum).
+    """
+    return profile_input(
+        static,
+        cleat_profile(height, base, shape),
+        speed,
+        distance,
+        sample_rate,
+        description=f"{shape} cleat {base * 1e3:.0f} mm x {height * 1e3:.0f} mm at {speed * 3.6:.1f} km/h",
+    )

@@ -1,0 +1,45 @@
+"""Road file formats: measured (or any) roads as CSV profiles and height fields."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from .textures import MIN_WAVELENGTH, RoadProfile
+
+
+def load_road_file(path: str | Path) -> RoadProfile:
+    """A measured (or any) road from a CSV file: a 2D profile or a height field.
+
+    Format: a header line, then one row per road coordinate (m, increasing, uniform step).
+    ``s,z`` is a 2D profile; ``s,z@-0.05,z@0.00,z@0.05`` a height field, one column per
+    lateral position ``y`` (m) given after ``@``. Heights in metres. Lines starting with ``#``
+    are comments. Each belt strip uses the track nearest to its centre line.
+    """
+    path = Path(path)
+    with open(path) as fh:
+        lines = [line for line in fh if line.strip() and not line.startswith("#")]
+    header = lines[0].strip().split(",")
+    if header[0].strip() != "s" or len(header) < 2:
+        raise ValueError(f"{path.name}: the header must be 's,z' or 's,z@<y>,z@<y>,...', got {','.join(header)!r}")
+    try:
+        y = np.array([0.0 if h.strip() == "z" else float(h.strip().split("@")[1]) for h in header[1:]])
+    except (IndexError, ValueError) as exc:
+        raise ValueError(f"{path.name}: height columns must be named 'z' or 'z@<y in m>'") from exc
+    data = np.loadtxt(lines[1:], delimiter=",", ndmin=2)
+    if data.shape[1] != len(header):
+        raise ValueError(f"{path.name}: {data.shape[1]} columns but {len(header)} names in the header")
+    if not np.all(np.isfinite(data)):
+        raise ValueError(f"{path.name}: the road contains NaN or inf")
+    s, z = data[:, 0], data[:, 1:].T
+    step = np.diff(s)
+    if s.size < 3 or np.any(step <= 0) or not np.allclose(step, step[0], rtol=1e-6):
+        raise ValueError(f"{path.name}: s must increase with a uniform step")
+    if step[0] > MIN_WAVELENGTH / 4:
+        raise ValueError(
+            f"{path.name}: step {step[0] * 1e3:.1f} mm is too coarse: valid range is <= "
+            f"{MIN_WAVELENGTH / 4 * 1e3:.1f} mm (4 samples per 5 cm)"
+        )
+    order = np.argsort(y)
+    return RoadProfile(s=s, y=y[order], z=z[order], spectrum=None, seed=None, periodic=False)

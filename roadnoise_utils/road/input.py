@@ -1,0 +1,290 @@
+"""Road inputs: the road flowing through the footprint, one displacement history per tassello.
+
+Paper, *Simulation of Wheel-Road Interaction*: "The time histories of the displacements due
+to road irregularity can be obtained by flowing a spatial distribution of road unevenness
+through the contact patch. The displacement pertaining to each tassello is then defined as a
+weighted average of all the physical displacements of the points inside the area of the
+tassello, where the weighting function consists of the shape functions of the finite elements."
+
+For a road that is uniform across the width (a cleat, a 2D profile), the weighted average of
+tassello ``i`` is a correlation of the profile :math:`z(x)` with a fixed kernel,
+
+.. math:: u_i(d) = \\int k_i(x)\\, z(x + d)\\, dx, \\qquad
+          k_i(x) = \\sum_{n \\in i} w_n \\frac{N_n(x)}{\\int N_n\\,dx},
+
+where ``d`` is the distance the wheel has travelled over the road and :math:`N_n` the
+bilinear shape function (hat) of contact point ``n`` (:mod:`roadnoise_utils.tire.tasselli`,
+:mod:`.kernels`). The kernel is evaluated on a fine grid and the correlation done for all
+tasselli at once.
+
+Distance convention: a footprint point at ``x`` sees road coordinate ``s = x + d`` after the
+wheel has travelled ``d``, so road features move towards -x (backwards) as ``d`` grows; a
+feature starting at ``s = 0`` (its leading edge, met first) is under the axle at ``d = 0``.
+"""
+
+from __future__ import annotations
+
+import inspect
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..tire.static import StaticState
+from .kernels import strip_kernels
+from .textures import RoadSpectrum, generate_field, generate_profile
+
+#: Simulation band of the RM model (Hz), paper abstract: "0-250 Hz".
+BAND = 250.0
+#: Time samples per period of the band's top frequency, at least (FOH inputs, decay fits).
+SAMPLES_PER_PERIOD = 20
+#: Largest road step per time sample (m): about half the 5.7-6 mm spacing of the tread points,
+#: so each tassello input varies smoothly between samples (the road itself is averaged on a grid
+#: ``oversample`` times finer).
+MAX_ROAD_STEP = 3.5e-3
+#: Road grid of slow runs (m): finer steps are interpolated linearly from this grid.
+ROAD_GRID = 1.0e-4
+
+
+@dataclass(frozen=True, eq=False)
+class RoadInput:
+    """Displacement histories of the tasselli.
+
+    Attributes
+    ----------
+    t : ndarray (n_samples,)
+        Time (s), uniform, starting at 0.
+    distance : ndarray (n_samples,)
+        Distance travelled (m), ``speed * t`` plus the start offset.
+    u : ndarray (n_tasselli, n_samples)
+        Vertical displacement of each tassello (m), positive up.
+    speed : float
+        Rolling speed (m/s).
+    description : str
+        What the road is.
+    """
+
+    t: np.ndarray
+    distance: np.ndarray
+    u: np.ndarray
+    speed: float
+    description: str
+
+    @property
+    def dt(self) -> float:
+        """Time step (s)."""
+        return float(self.t[1] - self.t[0])
+
+    @property
+    def sample_rate(self) -> float:
+        """Samples per second (Hz)."""
+        return 1.0 / self.dt
+
+    def excerpt(self, start: int, stop: int) -> RoadInput:
+        """Samples ``start`` to ``stop`` (clipped to the record), the time restarting at 0."""
+        part = slice(start, min(stop, self.t.size))
+        return RoadInput(
+            t=self.t[part] - self.t[start],
+            distance=self.distance[part],
+            u=self.u[:, part],
+            speed=self.speed,
+            description=f"{self.description}, samples {start}-{part.stop}",
+        )
+
+    def padded(self, n_samples: int) -> RoadInput:
+        """The record extended with zero displacement to ``n_samples`` samples (the road beyond is flat)."""
+        extra = max(0, n_samples - self.t.size)
+        t = self.dt * np.arange(self.t.size + extra)
+        return RoadInput(
+            t=t,
+            distance=self.distance[0] + self.speed * t,
+            u=np.pad(self.u, ((0, 0), (0, extra))),
+            speed=self.speed,
+            description=f"{self.description}, zero-padded to {t.size} samples",
+        )
+
+
+def sample_rate_for(speed: float, band: float = BAND) -> float:
+    """Sample rate (Hz): at least ``SAMPLES_PER_PERIOD`` per period of ``band`` and a road
+    step of at most :data:`MAX_ROAD_STEP`, rounded up to a whole multiple of 100 Hz (5 kHz up
+    to 63 km/h, 10 kHz at 120 km/h)."""
+    fs = max(SAMPLES_PER_PERIOD * band, speed / MAX_ROAD_STEP)
+    return float(np.ceil(fs / 100.0) * 100.0)
+
+
+def check_sampling(speed: float, sample_rate: float, band: float = BAND) -> None:
+    """Refuse speeds and sample rates that cannot represent the band, naming the valid range."""
+    if not (np.isfinite(speed) and speed > 0):
+        raise ValueError(f"speed = {speed} m/s: valid range is (0, inf) m/s")
+    if not (np.isfinite(sample_rate) and sample_rate > 0):
+        raise ValueError(f"sample_rate = {sample_rate} Hz: must be a positive number")
+    needed = SAMPLES_PER_PERIOD * band
+    if sample_rate < needed:
+        raise ValueError(
+            f"sample_rate = {sample_rate:g} Hz is too coarse for the {band:g} Hz band: valid range is "
+            f">= {needed:g} Hz ({SAMPLES_PER_PERIOD} samples per period)"
+        )
+    step = speed / sample_rate
+    if step > MAX_ROAD_STEP:
+        raise ValueError(
+            f"road step speed/sample_rate = {step * 1e3:.2f} mm: valid range is <= {MAX_ROAD_STEP * 1e3:.1f} mm "
+            f"(raise sample_rate to >= {speed / MAX_ROAD_STEP:g} Hz at {speed:g} m/s)"
+        )
+
+
+def _correlate(z: np.ndarray, kernels: np.ndarray, stride: int, n_out: int, step: float) -> np.ndarray:
+    """``step * sum_j k[r, j] z[j + stride * m]`` for every kernel row r and output m (BLAS matmul)."""
+    windows = np.lib.stride_tricks.sliding_window_view(z, kernels.shape[1])[::stride][:n_out]
+    return step * (kernels @ windows.T)
+
+
+def profile_input(
+    static: StaticState,
+    profile,
+    speed: float,
+    distance: tuple[float, float],
+    sample_rate: float | None = None,
+    oversample: int = 4,
+    description: str = "road profile",
+) -> RoadInput:
+    """Tassello displacements for a road flowing through the footprint.
+
+    Parameters
+    ----------
+    static : StaticState
+        The loaded tire (its tasselli and their shape-function weights).
+    profile : callable
+        Road height (m). ``profile(s)`` for a road uniform across the width (2D), or
+        ``profile(s, y)`` for a laterally varying road (3D): road coordinate ``s`` (m, array)
+        and lateral position ``y`` (m, scalar). The footprint point at ``x`` sees road
+        coordinate ``x + d`` after the wheel has travelled ``d``; a 3D road is sampled along
+        the centre line of each belt strip.
+    speed : float
+        Rolling speed (m/s), > 0.
+    distance : (float, float)
+        Travel range (m) to simulate.
+    sample_rate : float, optional
+        Samples per second; default :func:`sample_rate_for`.
+    oversample : int
+        The correlation is done on a road grid ``oversample`` times finer than one time step
+        (or than :data:`ROAD_GRID` when a time step covers less road; the result is then
+        interpolated linearly to the time samples).
+    """
+    fs = sample_rate_for(speed) if sample_rate is None else float(sample_rate)
+    check_sampling(speed, fs)
+    d0, d1 = distance
+    if not d1 > d0:
+        raise ValueError(f"distance = {distance}: the end must exceed the start")
+    dt = 1.0 / fs
+    n = int(np.floor((d1 - d0) / (speed * dt))) + 1
+    t = dt * np.arange(n)
+    distance_samples = d0 + speed * t
+    # road grid: one time step of road, but no finer than ROAD_GRID (slow runs are interpolated)
+    grid = max(speed * dt, min(ROAD_GRID, d1 - d0))
+    n_grid = int(np.ceil((d1 - d0) / grid)) + 1
+    step = grid / oversample
+    parts, x0 = strip_kernels(static.tasselli, step)
+    n_x = parts[0][2].shape[1]
+    s = x0 + d0 + step * np.arange(n_x + (n_grid - 1) * oversample)
+    lateral = _takes_lateral(profile)
+    y_strips = _strip_centres(static)
+    on_grid = np.zeros((static.tasselli.n, n_grid))
+    z_uniform = None if lateral else _heights(profile, s)
+    for strip, rows, kernels in parts:
+        z = _heights(lambda ss, y=y_strips[strip]: profile(ss, y), s) if lateral else z_uniform
+        on_grid[rows] += _correlate(z, kernels, oversample, n_grid, step)
+    if grid == speed * dt:
+        u = on_grid[:, :n]
+    else:
+        position = (distance_samples - d0) / grid
+        left = np.minimum(np.floor(position).astype(int), n_grid - 2)
+        frac = position - left
+        u = on_grid[:, left] * (1 - frac) + on_grid[:, left + 1] * frac
+    return RoadInput(t=t, distance=distance_samples, u=u, speed=float(speed), description=description)
+
+
+def _heights(profile, s: np.ndarray) -> np.ndarray:
+    z = np.asarray(profile(s), dtype=float)
+    if z.shape != s.shape or not np.all(np.isfinite(z)):
+        raise ValueError("the road profile must return finite heights, one per road coordinate")
+    return z
+
+
+def _takes_lateral(profile) -> bool:
+    """Whether ``profile`` is a 3D road ``profile(s, y)`` (two required arguments)."""
+
+    try:
+        params = inspect.signature(profile).parameters.values()
+    except (TypeError, ValueError):
+        return False
+    required = [
+        p
+        for p in params
+        if p.default is inspect.Parameter.empty and p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)
+    ]
+    return len(required) >= 2
+
+
+def _strip_centres(static: StaticState) -> np.ndarray:
+    """Lateral position of every belt strip (m), indexed by strip number."""
+    t = static.tasselli
+    centres = np.full(int(t.node_strip.max()) + 1, np.nan)
+    centres[t.node_strip] = t.node_y
+    return centres
+
+
+#: Road generated beyond the travel (m): the footprint's leading edge runs ahead of the axle.
+ROAD_MARGIN = 5.0
+
+
+def contact_tracks(static: StaticState) -> np.ndarray:
+    """Lateral positions (m) of the belt strips in contact: where a 3D road needs its tracks."""
+    centres = _strip_centres(static)
+    return np.unique(centres[np.isfinite(centres)])
+
+
+def texture_input(
+    static: StaticState,
+    spectrum: RoadSpectrum,
+    speed: float,
+    duration: float,
+    seed: int,
+    lateral: bool = True,
+    sample_rate: float | None = None,
+    step: float = 0.004,
+) -> RoadInput:
+    """Tassello displacements for ``duration`` s on a generated road of PSD ``spectrum``.
+
+    Parameters
+    ----------
+    static : StaticState
+        The loaded tire.
+    spectrum : RoadSpectrum
+        The road's displacement PSD (:mod:`.textures`).
+    speed : float
+        Rolling speed (m/s), > 0.
+    duration : float
+        Simulated time (s), > 0.
+    seed : int
+        Seed of the random phases: the same seed gives the same road.
+    lateral : bool
+        ``True``: a laterally varying 3D road, one coherent track per belt strip in contact
+        (:func:`.textures.generate_field`); ``False``: a 2D road uniform across the width.
+    sample_rate : float, optional
+        Samples per second; default :func:`sample_rate_for`.
+    step : float
+        Road grid of the generated profile (m), at most a fifth of the shortest wavelength.
+    """
+    if not (np.isfinite(duration) and duration > 0):
+        raise ValueError(f"duration = {duration} s: valid range is (0, inf) s")
+    if not (np.isfinite(speed) and speed > 0):
+        raise ValueError(f"speed = {speed} m/s: valid range is (0, inf) m/s")
+    travel = duration * speed
+    length = travel + ROAD_MARGIN
+    if lateral:
+        road = generate_field(spectrum, length, step, contact_tracks(static), seed=seed).as_3d()
+    else:
+        road = generate_profile(spectrum, length, step, seed=seed).as_2d()
+    description = f"{spectrum.name} ({'3D' if lateral else '2D'}, seed {seed})"
+    return profile_input(
+        static, road, speed, (0.0, travel), sample_rate=sample_rate, oversample=1, description=description
+    )

@@ -1,0 +1,376 @@
+"""Static analysis of the FET: inflate, load against a flat road or a drum (paper Fig. 2-3).
+
+The paper's FET analysis mounts the rim, inflates the tire and loads it vertically before
+any dynamics ("The FET Model"). Our FET is linear about the inflated state (pre-tension and
+pressure load stiffness included, :mod:`.fet`); the nonlinearity of loading is the unilateral
+contact, solved with a primal active set on the tread springs:
+
+* a tread point is in contact when the road penetrates it; its contact force is the tread
+  spring force :math:`\\lambda_n = k_n\\,(z_{road} - z_{tread} - u_{z,n}) \\ge 0`;
+* contact is frictionless (vertical forces only) while loading;
+* the road rises by the deflection :math:`\\delta` until the contact forces sum to the load.
+
+The belt response to contact forces is condensed onto the tread points with the influence
+(compliance) matrix :math:`C = E^T K^{-1} E`, computed column by column only for the points
+that enter the active set, so each active-set iteration is a small dense solve and the whole
+load-deflection curve is cheap. The hub is fixed; the force
+it receives equals the load to round-off.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import pandas as pd
+import scipy.linalg as sla
+import scipy.sparse.linalg as spla
+
+from .ring_model import UZ, FETModel
+from .tasselli import Tasselli, tassellate
+
+#: Nodes within this angle of the bottom of the tire are contact candidates (rad).
+CANDIDATE_ANGLE = np.deg2rad(45.0)
+
+
+@dataclass(frozen=True, eq=False)
+class RoadSurface:
+    """A rigid road under the tire: flat (``drum_radius = inf``) or a drum of radius ``drum_radius`` (m).
+
+    The surface height at the tire's longitudinal coordinate ``x`` is
+    ``z(x) = top - (R - sqrt(R^2 - x^2))`` with ``top`` its highest point (under the axle).
+    """
+
+    kind: str
+    drum_radius: float = np.inf
+
+    def __post_init__(self) -> None:
+        if self.kind not in ("flat", "drum"):
+            raise ValueError(f"road = {self.kind!r}: valid values are 'flat' and 'drum'")
+        if self.kind == "drum" and not (np.isfinite(self.drum_radius) and self.drum_radius > 0.3):
+            raise ValueError(f"drum_radius = {self.drum_radius} m: valid range is (0.3, inf) m")
+
+    def drop(self, x: np.ndarray) -> np.ndarray:
+        """How far the surface lies below its top at ``x`` (m)."""
+        if self.kind == "flat":
+            return np.zeros_like(x)
+        r = self.drum_radius
+        return r - np.sqrt(np.maximum(r**2 - x**2, 0.0))
+
+
+@dataclass(frozen=True, eq=False)
+class StaticState:
+    """The inflated tire loaded against the road.
+
+    Attributes
+    ----------
+    road : RoadSurface
+        The surface it stands on.
+    load : float
+        Vertical load (N).
+    deflection : float
+        Rise of the road from first touch to equilibrium (m).
+    contact : ndarray of bool (n_strips, n_elements)
+        Tread points in contact.
+    contact_force : ndarray (n_strips, n_elements)
+        Vertical contact force at each tread point (N), zero outside contact.
+    pressure : ndarray (n_strips, n_elements)
+        Contact force per gross tread area of the point (Pa).
+    displacement : ndarray (n_dof,)
+        Displacement from the inflated state (m, rad); zero at the fixed hub.
+    hub_force : float
+        Vertical force the tire exerts on the fixed hub (N), positive upward; equals ``load``.
+    vertical_stiffness : float
+        Tangent vertical stiffness at the load with the contact set frozen, dF/d(delta) (N/m).
+    tasselli : Tasselli
+        The footprint divided into blocks.
+    iterations : int
+        Active-set iterations used.
+    """
+
+    road: RoadSurface
+    load: float
+    deflection: float
+    contact: np.ndarray
+    contact_force: np.ndarray
+    pressure: np.ndarray
+    displacement: np.ndarray
+    hub_force: float
+    vertical_stiffness: float
+    tasselli: Tasselli
+    iterations: int
+    road_height: np.ndarray = field(repr=False)
+
+    @property
+    def footprint_length(self) -> float:
+        """Longest contact length of a strip (m), tread-point tributary lengths included."""
+        t = self.tasselli
+        return float(np.max(t.node_x + 0.5 * t.node_dx_plus) - np.min(t.node_x - 0.5 * t.node_dx_minus))
+
+    @property
+    def footprint_width(self) -> float:
+        """Width of the strips in contact (m)."""
+        t = self.tasselli
+        return float(np.ptp(t.node_y) + t.strip_width)
+
+    @property
+    def contact_area(self) -> float:
+        """Gross contact area (m^2)."""
+        return float(np.sum(self.tasselli.area))
+
+    @property
+    def mean_pressure(self) -> float:
+        """Load over gross contact area (Pa)."""
+        return self.load / self.contact_area
+
+
+@dataclass(eq=False)
+class ContactProblem:
+    """The loaded-tire contact problem condensed onto the candidate tread points.
+
+    Build it once per tire and road (:func:`contact_problem`); :meth:`solve` then costs a few
+    small dense solves per load. Columns of the compliance matrix are computed lazily, only
+    for the tread points that ever enter the active set (C is symmetric, so those columns
+    also give the displacement of every other candidate).
+    """
+
+    fet: FETModel
+    road: RoadSurface
+    free: np.ndarray  # DOF indices not fixed (all but the hub)
+    candidates: np.ndarray  # flat indices (strip * n_el + node) of candidate tread points
+    candidate_dofs: np.ndarray  # their uz DOF, as positions in ``free``
+    stiffness_tread: np.ndarray  # k_n of candidates (N/m)
+    gap0: np.ndarray  # tread point height above the road top before loading, at zero rise (m)
+    road_height0: np.ndarray  # road height under each candidate before loading (m)
+    lu: object  # sparse LU of K on the free DOF
+    _columns: np.ndarray = field(init=False, repr=False)  # C[:, j] once computed (m/N)
+    _known: np.ndarray = field(init=False, repr=False)
+
+    def __post_init__(self) -> None:
+        n = self.candidates.size
+        self._columns = np.zeros((n, n))
+        self._known = np.zeros(n, bool)
+
+    def compliance(self, columns: np.ndarray) -> np.ndarray:
+        """Columns ``C[:, columns]`` of the compliance matrix :math:`E^T K^{-1} E` (m/N)."""
+        missing = columns[~self._known[columns]]
+        if missing.size:
+            rhs = np.zeros((self.free.size, missing.size))
+            rhs[self.candidate_dofs[missing], np.arange(missing.size)] = 1.0
+            self._columns[:, missing] = self.lu.solve(rhs)[self.candidate_dofs]
+            self._known[missing] = True
+        return self._columns[:, columns]
+
+    def _active_solution(self, active: np.ndarray, load: float) -> tuple[np.ndarray, float, float]:
+        """Contact forces of the active set at ``load``, the rise delta and dF/d(delta)."""
+        idx = np.nonzero(active)[0]
+        c = self.compliance(idx)[idx]
+        c = 0.5 * (c + c.T) + np.diag(1.0 / self.stiffness_tread[idx])
+        factor = sla.cho_factor(c)
+        a = sla.cho_solve(factor, np.ones(idx.size))
+        b = sla.cho_solve(factor, -self.gap0[idx])
+        delta = (load - b.sum()) / a.sum()
+        return delta * a + b, delta, a.sum()
+
+    def solve(self, load: float, max_iterations: int = 200) -> tuple[np.ndarray, float, float, int]:
+        """Active-set solve at ``load`` (N): (forces on candidates, deflection, tangent stiffness, iterations)."""
+        if not (np.isfinite(load) and load > 0):
+            raise ValueError(f"load = {load} N: valid range is (0, inf) N")
+        # start from the geometric overlap at a quarter of a typical deflection: the belt moves
+        # up bodily and the footprint is much shorter than the overlap at full deflection
+        active = self.gap0 <= self.gap0.min() + 0.25 * load / 2.0e5
+        for iteration in range(1, max_iterations + 1):
+            lam_active, delta, k_tan = self._active_solution(active, load)
+            forces = np.zeros(active.size)
+            forces[active] = lam_active
+            uz = self.compliance(np.nonzero(active)[0]) @ lam_active
+            gap = self.gap0 - delta + uz  # tread point above road (m)
+            new_active = np.where(active, forces > 0.0, gap < 0.0)
+            if np.array_equal(new_active, active):
+                return forces, delta, k_tan, iteration
+            active = new_active
+            if not active.any():
+                raise RuntimeError("active set became empty; the contact problem is ill-posed")
+        raise RuntimeError(f"contact active set did not converge in {max_iterations} iterations")
+
+    def full_displacement(self, forces: np.ndarray) -> np.ndarray:
+        """Displacement of all DOF (hub fixed) under vertical forces on the candidates."""
+        f = np.zeros(self.free.size)
+        f[self.candidate_dofs] = forces
+        u = np.zeros(self.fet.n_dof)
+        u[self.free] = self.lu.solve(f)
+        return u
+
+
+def contact_problem(fet: FETModel, road: RoadSurface) -> ContactProblem:
+    """Factorise the static stiffness (hub fixed) and set up the candidate tread points."""
+    mesh = fet.mesh
+    free = np.setdiff1d(np.arange(fet.n_dof), mesh.hub_dofs)
+    k_static = fet.K(0.0, storage_only=True)[free][:, free].tocsc()
+    lu = spla.splu(k_static, permc_spec="NATURAL")  # circumference-major numbering: banded
+    theta = np.angle(np.exp(1j * mesh.theta))  # in (-pi, pi]
+    strip, node = np.nonzero(np.broadcast_to(np.abs(theta) <= CANDIDATE_ANGLE, (mesh.n_strips, mesh.n_elements)))
+    candidates = strip * mesh.n_elements + node
+    tx, tz = mesh.tread_xz()
+    top = tz.min()
+    road_height0 = top - road.drop(tx.ravel()[candidates])
+    return ContactProblem(
+        fet=fet,
+        road=road,
+        free=free,
+        candidates=candidates,
+        candidate_dofs=np.searchsorted(free, mesh.dof(strip, node, UZ)),
+        stiffness_tread=fet.tread_normal.ravel()[candidates],
+        gap0=tz.ravel()[candidates] - road_height0,
+        road_height0=road_height0,
+        lu=lu,
+    )
+
+
+def _tasselli_of(fet: FETModel, contact: np.ndarray) -> Tasselli:
+    mesh = fet.mesh
+    tx, _ = mesh.tread_xz()
+    strip, node = np.nonzero(contact)
+    ne = mesh.n_elements
+    x = tx[strip, node]
+    x_prev = tx[strip, (node - 1) % ne]
+    x_next = tx[strip, (node + 1) % ne]
+    spec = fet.spec.tasselli
+    return tassellate(
+        node_strip=strip,
+        node_index=node,
+        node_x=x,
+        node_y=mesh.y[strip],
+        node_dx_minus=x - x_prev,
+        node_dx_plus=x_next - x,
+        strip_width=mesh.strip_width,
+        target_length=spec.target_length,
+        strips_per_column=spec.strips_per_column,
+    )
+
+
+def solve_static(
+    fet: FETModel, road: str = "flat", load: float | None = None, drum_radius: float | None = None
+) -> StaticState:
+    """Inflate and load the tire against a flat road or a drum.
+
+    Parameters
+    ----------
+    fet : FETModel
+        The tire (:func:`.fet.build_fet`).
+    road : {"flat", "drum"}
+        Road surface.
+    load : float, optional
+        Vertical load (N); default the tire's nominal load.
+    drum_radius : float, optional
+        Drum radius (m), required for ``road="drum"`` (the paper's drum, 1.25 m, is
+        ``experiments.cleat_conditions().drum_radius``; ``ru.solve_static`` fills it in).
+
+    Returns
+    -------
+    StaticState
+        Contact set, contact forces and pressures, deflection, tangent vertical stiffness,
+        displacement field and tasselli.
+    """
+    surface = make_road(road, drum_radius)
+    load = fet.spec.operating.vertical_load if load is None else float(load)
+    problem = contact_problem(fet, surface)
+    forces, delta, k_tan, iterations = problem.solve(load)
+    return _state_from_solution(problem, forces, delta, k_tan, iterations, load)
+
+
+def make_road(road: str, drum_radius: float | None = None) -> RoadSurface:
+    """A :class:`RoadSurface` from its name and, for ``"drum"``, its radius (m).
+
+    The radius has no default here: the test conditions (``data/conditions``) are resolved by
+    :mod:`roadnoise_utils.experiments`, e.g. ``experiments.cleat_conditions().drum_radius``.
+    """
+    if road not in ("flat", "drum"):
+        raise ValueError(f"road = {road!r}: valid values are 'flat' and 'drum'")
+    if road == "flat":
+        return RoadSurface("flat")
+    if drum_radius is None:
+        raise ValueError("drum_radius is required for road='drum': give the drum radius in m, valid range (0.3, inf)")
+    return RoadSurface("drum", float(drum_radius))
+
+
+def _state_from_solution(
+    problem: ContactProblem, forces: np.ndarray, delta: float, k_tan: float, iterations: int, load: float
+) -> StaticState:
+    fet = problem.fet
+    mesh = fet.mesh
+    shape = (mesh.n_strips, mesh.n_elements)
+    theta = np.angle(np.exp(1j * mesh.theta[problem.candidates % mesh.n_elements]))
+    if np.max(np.abs(theta[forces > 0])) >= CANDIDATE_ANGLE - 2 * np.pi / mesh.n_elements:
+        raise RuntimeError("contact reaches the edge of the candidate zone; the load is too high for this tire")
+    u = problem.full_displacement(forces)
+    _check_no_hidden_penetration(problem, u, delta)
+    contact_force = np.zeros(shape)
+    contact_force.ravel()[problem.candidates] = forces
+    road_height = np.full(shape, np.nan)
+    road_height.ravel()[problem.candidates] = problem.road_height0 + delta
+    hub_row = fet.K(0.0, storage_only=True)[mesh.hub_dofs[1]]
+    hub_force = -float((hub_row @ u)[0])
+    contact = contact_force > 0
+    return StaticState(
+        road=problem.road,
+        load=load,
+        deflection=float(delta),
+        contact=contact,
+        contact_force=contact_force,
+        pressure=contact_force / mesh.tread_area(),
+        displacement=u,
+        hub_force=hub_force,
+        vertical_stiffness=float(k_tan),
+        tasselli=_tasselli_of(fet, contact),
+        iterations=iterations,
+        road_height=road_height,
+    )
+
+
+def _check_no_hidden_penetration(problem: ContactProblem, u: np.ndarray, delta: float) -> None:
+    """Every tread point outside the candidate zone must stay clear of the road."""
+    mesh = problem.fet.mesh
+    tx, tz = mesh.tread_xz()
+    j, k = np.meshgrid(np.arange(mesh.n_strips), np.arange(mesh.n_elements), indexing="ij")
+    uz = u[mesh.dof(j, k, UZ)]
+    top = tz.min()
+    lower_half = np.cos(mesh.theta)[None, :] > 0
+    gap = tz + uz - (top + delta - problem.road.drop(np.where(lower_half, tx, 0.0)))
+    outside = np.ones(mesh.n_strips * mesh.n_elements, bool)
+    outside[problem.candidates] = False
+    if np.any(gap.ravel()[outside] < 0):
+        raise RuntimeError("a tread point outside the candidate zone penetrates the road")
+
+
+def load_deflection(
+    fet: FETModel, loads: np.ndarray, road: str = "flat", drum_radius: float | None = None
+) -> np.ndarray:
+    """Deflection (m) at each load (N): the load-deflection curve of the tire."""
+    problem = contact_problem(fet, make_road(road, drum_radius))
+    return np.array([problem.solve(float(w))[1] for w in np.atleast_1d(loads)])
+
+
+def static_summary(states: dict[str, StaticState]) -> pd.DataFrame:
+    """Key numbers of one or more static states (columns), in the paper's units."""
+    rows = {}
+    for name, st in states.items():
+        t = st.tasselli
+        rows[name] = {
+            "load (N)": st.load,
+            "deflection (mm)": st.deflection * 1e3,
+            "vertical stiffness, tangent (N/mm)": st.vertical_stiffness / 1e3,
+            "vertical stiffness, secant (N/mm)": st.load / st.deflection / 1e3,
+            "footprint length (mm)": st.footprint_length * 1e3,
+            "footprint width (mm)": st.footprint_width * 1e3,
+            "contact area (cm^2)": st.contact_area * 1e4,
+            "mean contact pressure (MPa)": st.mean_pressure / 1e6,
+            "peak contact pressure (MPa)": st.pressure.max() / 1e6,
+            "contact points": int(st.contact.sum()),
+            "tasselli": t.n,
+            "force balance (contact and hub = load to 1e-9)": bool(
+                abs(st.hub_force / st.load - 1.0) < 1e-9 and abs(st.contact_force.sum() / st.load - 1.0) < 1e-9
+            ),
+            "active-set iterations": st.iterations,
+        }
+    return pd.DataFrame(rows)

@@ -1,0 +1,207 @@
+"""Stage cache: keys follow every input and the code a stage runs, writes are atomic, faults never lose a result."""
+
+from __future__ import annotations
+
+import concurrent.futures
+import dataclasses
+import multiprocessing
+import os
+import shutil
+import time
+
+import numpy as np
+import pytest
+
+import roadnoise_utils as ru
+from roadnoise_utils.repro import cache
+from roadnoise_utils.tire.spec import SECTIONS, Compound
+
+
+@pytest.fixture
+def cache_dir(tmp_path, monkeypatch):
+    monkeypatch.setenv("ROADNOISE_CACHE_DIR", str(tmp_path))
+    monkeypatch.delenv("ROADNOISE_CACHE", raising=False)
+    return tmp_path
+
+
+def _all_parameters(spec):
+    for section, cls in SECTIONS.items():
+        for f in dataclasses.fields(cls):
+            yield f"{section}.{f.name}", getattr(getattr(spec, section), f.name), f.metadata["range"]
+    for name, compound in spec.compounds.items():
+        for f in dataclasses.fields(Compound):
+            yield f"compounds.{name}.{f.name}", getattr(compound, f.name), f.metadata["range"]
+
+
+def test_key_changes_when_any_parameter_changes(tire):
+    base = cache.cache_key("static", {"tire": tire, "road": "flat"})
+    keys = {base}
+    count = 0
+    for name, value, (lo, hi) in _all_parameters(tire):
+        new = value + 1 if isinstance(value, int) else value * 1.01 if value != 0 else 0.1 * hi
+        if not lo <= new <= hi:
+            new = value - 1 if isinstance(value, int) else value * 0.99
+        try:
+            changed = tire.replace(**{name: new})
+        except ValueError:  # a cross-field rule; any other valid value would do
+            continue
+        keys.add(cache.cache_key("static", {"tire": changed, "road": "flat"}))
+        count += 1
+    assert count == len(list(_all_parameters(tire)))  # every parameter could be changed
+    assert len(keys) == count + 1  # every change gave its own key
+
+
+def test_key_changes_with_options_and_code(tire):
+    a = cache.cache_key("frf", {"tire": tire, "freqs": np.arange(10.0)}, "code")
+    assert a != cache.cache_key("frf", {"tire": tire, "freqs": np.arange(11.0)}, "code")
+    assert a != cache.cache_key("frf", {"tire": tire, "freqs": np.arange(10.0) + 1e-9}, "code")
+    assert a != cache.cache_key("modes", {"tire": tire, "freqs": np.arange(10.0)}, "code")
+    assert a != cache.cache_key("frf", {"tire": tire, "freqs": np.arange(10.0)}, "edited code")
+    # where the tire was read from is not part of its identity
+    moved = dataclasses.replace(tire, source="elsewhere.toml")
+    assert a == cache.cache_key("frf", {"tire": moved, "freqs": np.arange(10.0)}, "code")
+
+
+def test_cached_stage_is_reused_and_corruption_recomputed(cache_dir):
+    calls = []
+
+    def compute():
+        calls.append(1)
+        return {"value": np.arange(5.0)}
+
+    first = cache.cached("demo", {"x": 1.0}, compute)
+    again = cache.cached("demo", {"x": 1.0}, compute)
+    assert len(calls) == 1 and np.array_equal(first["value"], again["value"])
+    (path,) = cache_dir.glob("demo-*.pkl")
+    data = path.read_bytes()
+    path.write_bytes(data[:-7] + b"garbage")  # same length, wrong checksum
+    with pytest.warns(UserWarning, match="discarding"):
+        recomputed = cache.cached("demo", {"x": 1.0}, compute)
+    assert len(calls) == 2 and np.array_equal(recomputed["value"], first["value"])
+    path.write_bytes(data[: len(data) // 2])  # truncated
+    with pytest.warns(UserWarning, match="discarding"):
+        cache.cached("demo", {"x": 1.0}, compute)
+    assert len(calls) == 3
+    assert not list(cache_dir.glob("*.tmp"))  # atomic writes leave no temporary files
+
+
+def test_failed_compute_writes_nothing(cache_dir):
+    def boom():
+        raise RuntimeError("stage failed")
+
+    with pytest.raises(RuntimeError):
+        cache.cached("demo", {"x": 2.0}, boom)
+    assert not list(cache_dir.glob("*.pkl")) and not list(cache_dir.glob("*.tmp"))
+
+
+def test_stage_round_trip(cache_dir, coarse_tire):
+    st1 = ru.stages.solve_static(coarse_tire, "flat")
+    st2 = ru.stages.solve_static(coarse_tire, "flat")
+    assert len(list(cache_dir.glob("solve_static-*.pkl"))) == 1
+    assert np.array_equal(st1.contact_force, st2.contact_force)
+    other = ru.stages.solve_static(coarse_tire, "flat", load=3000.0)
+    assert len(list(cache_dir.glob("solve_static-*.pkl"))) == 2 and other.load == 3000.0
+
+
+# ---------------------------------------------------------------- faults: nothing lost, nothing in the way
+
+
+def test_unwritable_cache_warns_and_returns_the_result(tmp_path, monkeypatch):
+    """A path that is a file, and a folder that refuses writes (simulated: root ignores permissions)."""
+    not_a_folder = tmp_path / "file"
+    not_a_folder.write_text("x")
+    monkeypatch.setenv("ROADNOISE_CACHE_DIR", str(not_a_folder))
+    monkeypatch.delenv("ROADNOISE_CACHE", raising=False)
+    with pytest.warns(UserWarning, match="cannot be used"):
+        assert cache.cached("demo", {"x": 3.0}, lambda: 42) == 42
+    read_only = tmp_path / "read-only"
+    read_only.mkdir()
+    monkeypatch.setenv("ROADNOISE_CACHE_DIR", str(read_only))
+    if os.geteuid() == 0:  # root writes anyway: make the write itself fail as it would
+        monkeypatch.setattr(cache.tempfile, "mkstemp", _refuse)
+    else:
+        read_only.chmod(0o500)
+    try:
+        with pytest.warns(UserWarning, match="not written"):
+            assert cache.cached("demo", {"x": 4.0}, lambda: 43) == 43
+    finally:
+        read_only.chmod(0o700)
+    assert not list(read_only.glob("*.pkl"))
+
+
+def _refuse(*args, **kwargs):
+    raise PermissionError(13, "Permission denied")
+
+
+def test_orphan_temporary_files_are_removed(cache_dir):
+    """A killed write leaves ``<entry>*.tmp``: the next computation of that key deletes it; old ones go anyway."""
+    stale = cache_dir / "other-0123.pkl9x.tmp"
+    stale.write_bytes(b"half")
+    os.utime(stale, (time.time() - 2 * cache.STALE_TMP_AGE,) * 2)
+    cache._sweep_stale.cache_clear()
+    cache.cached("demo", {"x": 5.0}, lambda: 1)
+    assert not stale.exists()
+    (entry,) = cache_dir.glob("demo-*.pkl")
+    entry.unlink()
+    orphan = cache_dir / f"{entry.name}abc.tmp"
+    orphan.write_bytes(b"half")  # fresh, but nobody holds the key's lock: an orphan
+    assert cache.cached("demo", {"x": 5.0}, lambda: 2) == 2
+    assert not orphan.exists() and entry.exists()
+
+
+def _slow_stage(folder: str, log: str) -> int:
+    os.environ["ROADNOISE_CACHE_DIR"] = folder
+
+    def compute() -> int:
+        with open(log, "a") as fh:
+            fh.write("computed\n")
+        time.sleep(1.0)
+        return 7
+
+    return cache.cached("locked_demo", {"x": 1.0}, compute)
+
+
+def test_two_processes_compute_a_stage_once(tmp_path):
+    log = tmp_path / "log.txt"
+    context = multiprocessing.get_context("fork")
+    with concurrent.futures.ProcessPoolExecutor(2, mp_context=context) as pool:
+        results = list(pool.map(_slow_stage, [str(tmp_path)] * 2, [str(log)] * 2))
+    assert results == [7, 7]
+    assert log.read_text().count("computed") == 1
+
+
+# ---------------------------------------------------------------- what a stage's code is
+
+
+def test_module_closure_follows_imports_but_not_figures():
+    closure = cache.module_closure(["roadnoise_utils.tire.static"])
+    assert "roadnoise_utils.tire.ring_model" in closure and "roadnoise_utils.tire.tasselli" in closure
+    assert "roadnoise_utils.repro.paths" in closure  # through the tire spec reader
+    assert not [m for m in closure if ".figures" in m or ".experiments" in m or ".response" in m]
+
+
+def test_fingerprints_follow_the_code_each_stage_runs(tmp_path, tire):
+    """Editing a figure module changes no stage's fingerprint; editing the static solver changes every stage downstream."""
+    ru.stages.solve_static(tire)
+    ru.stages.fit_tasselli(tire)
+    ru.stages.modal_reduction(tire)
+    copy = tmp_path / "roadnoise_utils"
+    shutil.copytree(cache.PACKAGE_DIR, copy, ignore=shutil.ignore_patterns("__pycache__"))
+    stages = {name: cache.STAGE_MODULES[name] for name in ("solve_static", "fit_tasselli", "modal_reduction")}
+
+    def fingerprints():
+        return {name: cache.code_fingerprint(modules, copy) for name, modules in stages.items()}
+
+    before = fingerprints()
+    assert before == {name: cache.code_fingerprint(m) for name, m in stages.items()}  # the copy is the package
+    for figure in (copy / "figures").glob("*.py"):
+        figure.write_text(figure.read_text() + "\n# edited\n")
+    (copy / "repro" / "claims.py").write_text((copy / "repro" / "claims.py").read_text() + "\n# edited\n")
+    cache.code_fingerprint.cache_clear()
+    assert fingerprints() == before
+    solver = copy / "tire" / "static.py"
+    solver.write_text(solver.read_text() + "\n# edited\n")
+    cache.code_fingerprint.cache_clear()
+    after = fingerprints()
+    assert all(after[name] != before[name] for name in stages)
+    cache.code_fingerprint.cache_clear()

@@ -1,0 +1,59 @@
+"""The reproduction command, its report, the README's promises and the notebooks' parameters."""
+
+from __future__ import annotations
+
+import pytest
+
+from roadnoise_utils.repro import claims, collection, reproduce
+from roadnoise_utils.repro.paths import REPO_ROOT
+
+README = (REPO_ROOT / "README.md").read_text()
+
+SMALL = [
+    {"id": "a", "claim": "a number", "where": "Fig. 1", "paper": 10.0, "rel": 0.1, "notebook": "x.ipynb"},
+    {"id": "b", "claim": "a bound", "where": "Eq. 2", "paper": "small", "max": 1.0, "notebook": "y.ipynb"},
+    {
+        "id": "c",
+        "claim": "a deviation",
+        "where": "Fig. 3",
+        "paper": 5.0,
+        "rel": 0.1,
+        "notebook": "y.ipynb",
+        "known_deviation": "explained",
+    },
+]
+
+
+def test_report_passes_fails_and_deviations(tmp_path):
+    table = claims.report(claims=SMALL, evaluators={"a": lambda: 10.5, "b": lambda: 0.5, "c": lambda: 9.0})
+    assert list(table["verdict"]) == ["pass", "pass", "fail"]
+    assert claims.exit_status(table) == 0  # the only failure is documented
+    csv_path, md_path = claims.write_report(table, tmp_path)
+    assert csv_path.read_text().count("\n") == 4
+    text = md_path.read_text()
+    assert "2 of 3 claims reproduced" in text and "known deviation: c" in text and "explained" in text
+
+
+def test_an_undocumented_failure_makes_the_exit_status_non_zero(tmp_path, monkeypatch):
+    failing = claims.report(claims=SMALL, evaluators={"a": lambda: 20.0, "b": lambda: 0.5, "c": lambda: 5.0})
+    assert claims.exit_status(failing) == 1
+    with pytest.raises(AssertionError, match="a .paper 10, ours 20"):
+        claims.check(failing)
+    monkeypatch.setattr(claims, "report", lambda: failing)
+    assert reproduce.main(["--report-only", "--figures", str(tmp_path)]) == 1
+    assert (tmp_path / "reproduction-report.md").exists()
+
+
+def test_judge_tests():
+    assert claims.judge({"paper": 2.0, "rel": 0.1}, 2.15)
+    assert not claims.judge({"paper": 2.0, "rel": 0.1}, 2.3)
+    assert claims.judge({"paper": "x", "min": 1.0, "max": 2.0}, 1.5)
+    assert not claims.judge({"paper": 4, "equal": True}, 3.0)
+    assert not claims.judge({"paper": 4, "min": 0}, float("nan"))
+
+
+def test_every_claim_has_an_evaluator_and_a_notebook():
+    ready = {nb["file"] for nb in collection.notebooks() if nb["status"] == "ready"}
+    for c in claims.load_claims():
+        assert c["id"] in claims.EVALUATORS, c["id"]
+        assert c["notebook"] in ready, c["notebook"]

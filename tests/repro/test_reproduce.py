@@ -1,0 +1,97 @@
+"""The reproduction command, its report, the README's promises and the notebooks' parameters."""
+
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+
+import nbformat
+import numpy as np
+import pytest
+
+import roadnoise_utils as ru
+from roadnoise_utils.repro import collection, reproduce
+from roadnoise_utils.repro.paths import REPO_ROOT
+
+README = (REPO_ROOT / "README.md").read_text()
+
+SMALL = [
+    {"id": "a", "claim": "a number", "where": "Fig. 1", "paper": 10.0, "rel": 0.1, "notebook": "x.ipynb"},
+    {"id": "b", "claim": "a bound", "where": "Eq. 2", "paper": "small", "max": 1.0, "notebook": "y.ipynb"},
+    {
+        "id": "c",
+        "claim": "a deviation",
+        "where": "Fig. 3",
+        "paper": 5.0,
+        "rel": 0.1,
+        "notebook": "y.ipynb",
+        "known_deviation": "explained",
+    },
+]
+
+
+@pytest.mark.parametrize("notebook", sorted(p.name for p in (REPO_ROOT / "notebooks").glob("*.ipynb")))
+def test_every_notebook_has_a_parameters_cell(notebook):
+    nb = nbformat.read(REPO_ROOT / "notebooks" / notebook, as_version=4)
+    tagged = [c for c in nb.cells if "parameters" in c.get("metadata", {}).get("tags", [])]
+    assert len(tagged) == 1 and tagged[0].cell_type == "code"
+
+
+def test_readme_gallery_is_generated_and_every_figure_exists():
+    block = re.search(r"<!-- gallery -->\n(.*?)\n<!-- /gallery -->", README, re.S)
+    assert block and block.group(1).strip() == collection.gallery_markdown().strip()
+    images = re.findall(r'src="(figures/[^"]+)"', README)
+    assert len(images) >= 12
+    # every image is in the repository and is what reproduction writes from the committed notebooks
+    produced = set()
+    for path in (REPO_ROOT / "notebooks").glob("*.ipynb"):
+        nb = nbformat.read(path, as_version=4)
+        produced |= {name for name, *_ in reproduce.figure_names(nb, path.stem)}
+    for image in images:
+        assert (REPO_ROOT / image).exists(), image
+        assert image.removeprefix("figures/") in produced, image
+
+
+def test_readme_own_road_snippet(tire, fet, flat):
+    static = flat
+    tire_F = ru.stages.assemble_fixed_hub("165_65R14")
+    snippet = README.split("**Your own road.**", 1)[1].split("```python", 1)[1].split("```", 1)[0]
+    namespace = {"ru": ru, "static": static, "tire_F": tire_F}
+    exec(compile(snippet, "README", "exec"), namespace)  # the README's code, as written
+    force = namespace["force"].force
+    assert force.size > 1000 and np.all(np.isfinite(force)) and np.std(force) > 0
+
+
+def test_readme_own_tire_instructions(tmp_path):
+    """The README's new-tire recipe: copy a tire file, edit it, run notebook 01 on it with papermill."""
+    text = (REPO_ROOT / "data" / "tires" / "165_65R14.toml").read_text()
+    my_tire = tmp_path / "my_tire.toml"
+    my_tire.write_text(text.replace("inflation_pressure = 2.3e5", "inflation_pressure = 2.6e5"))
+    out = tmp_path / "my-tire.ipynb"
+    result = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "papermill",
+            str(REPO_ROOT / "notebooks" / "01-fe-tire-model.ipynb"),
+            str(out),
+            "--cwd",
+            str(REPO_ROOT / "notebooks"),
+            "-p",
+            "tire_name",
+            str(my_tire),
+            "-p",
+            "n_modes",
+            "30",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
+    assert result.returncode == 0, result.stderr[-3000:]
+    nb = nbformat.read(out, as_version=4)
+    printed = "".join(o.get("text", "") for c in nb.cells if c.cell_type == "code" for o in c.get("outputs", []))
+    spec = ru.load_tire(my_tire)
+    assert f"T = p b R = {spec.hoop_tension:.0f} N" in printed  # the notebook ran on the new tire
+    assert re.search(r"vertical stiffness\s+-\s+\d", printed)  # no targets for it: obtained values only

@@ -1,0 +1,109 @@
+"""Damping identification and modal reduction (paper stages 3-5) against the direct viscoelastic model."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import roadnoise_utils as ru
+from roadnoise_utils.response.modal_reduction import identify_modes
+
+
+@pytest.fixture(scope="module")
+def visco(fet, flat):
+    return ru.frf_visco(fet, flat, np.arange(0.0, 301.0, 1.0), progress=False)
+
+
+@pytest.fixture(scope="module")
+def reduced(fet, flat, visco):
+    return ru.modal_reduction(fet, flat, visco=visco)
+
+
+def test_identification_recovers_a_known_system():
+    """Noise-free FRF of three hysteretic modes plus a residual: poles recovered to 1e-6."""
+    f = np.arange(0.0, 301.0, 1.0)
+    w = 2 * np.pi * f
+    wr = 2 * np.pi * np.array([62.0, 118.0, 201.0])
+    eta = np.array([0.05, 0.03, 0.02])
+    residues = np.array([3.0e9, 2.0e9 + 5e8j, 4.0e9])
+    frf = (residues[None, :] / (wr**2 * (1 + 1j * eta) - w[:, None] ** 2)).sum(axis=1) + 1.0e4 - 0.01 * w**2
+    ident = identify_modes(f, frf, f_max=250.0)
+    assert ident.freqs == pytest.approx(wr / (2 * np.pi), rel=1e-6)
+    assert ident.loss_factor == pytest.approx(eta, rel=1e-5)
+    assert ident.rms_error < 1e-8
+
+
+def test_identification_bad_input():
+    f = np.arange(0.0, 10.0)
+    with pytest.raises(ValueError, match="finite"):
+        identify_modes(f, np.full(10, np.nan + 0j))
+    with pytest.raises(ValueError, match="same length"):
+        identify_modes(f, np.ones(9, complex))
+    with pytest.raises(ValueError, match="no resonance peak"):
+        identify_modes(f, np.ones(10, complex))
+
+
+def test_identified_damping_positive_and_consistent(reduced):
+    ident = reduced.identification
+    assert ident.freqs.size >= 4  # the first four vertical modes at least (paper Fig. 14)
+    assert np.all(ident.damping > 0)
+    measured = np.isfinite(ident.damping_half_power)
+    assert np.all(np.abs(ident.damping[measured] / ident.damping_half_power[measured] - 1) < 0.2)
+
+
+def test_reference_frequency_is_the_first_vertical_mode(reduced):
+    assert reduced.reference_frequency == pytest.approx(reduced.identification.freqs[0])
+    assert 75 < reduced.reference_frequency < 85
+
+
+def test_modes_reach_twice_the_band(reduced):
+    assert reduced.model.freqs.max() >= 500.0
+
+
+def test_modal_local_frfs_match_direct(reduced, visco):
+    """Every tassello within 5 % at the freezing frequency and 0.5 % at 0 Hz."""
+    frf = reduced.frf
+    k = int(np.argmin(np.abs(visco.freqs - reduced.reference_frequency)))
+    assert np.all(np.abs(frf.H[:, k] - visco.H[:, k]) <= 0.05 * np.abs(visco.H[:, k]))
+    assert np.all(np.abs(frf.H[:, 0] - visco.H[:, 0]) <= 0.005 * np.abs(visco.H[:, 0]))
+
+
+def test_paper_variant_sums_well_below_100_hz(fet, flat, visco):
+    """The paper's FET-frozen model with identified damping: Fig. 5 accuracy, decreasing with frequency."""
+    paper = ru.modal_reduction(fet, flat, visco=visco, frozen="storage", damping="identified")
+    errors = ru.analysis.band_errors(visco.freqs, visco.H_tot, paper.frf.H_sum)["complex rel. RMS"].to_numpy()
+    assert errors[0] < 0.1
+    assert np.all(np.diff(errors) > 0)
+
+
+def test_frozen_model_underestimates_frequencies_above_freezing(reduced, visco):
+    """Paper's approximation (a)."""
+    peaks = ru.analysis.peak_comparison(visco.freqs, visco.H_tot, reduced.frf.H_tot, f_max=260)
+    above = peaks["reference (Hz)"] > reduced.reference_frequency + 5
+    assert above.sum() >= 3 and np.all(peaks.loc[above, "shift (%)"] < 0)
+
+
+def test_hub_frf_static_value(reduced, visco, flat):
+    """|G_H(0)| is the vertical stiffness of the loaded tire (sign: a rising hub is pulled down)."""
+    assert visco.G_H[0].real < 0
+    assert abs(visco.G_H[0]) == pytest.approx(flat.vertical_stiffness, rel=0.01)
+    assert reduced.frf.G_H[0] == pytest.approx(visco.G_H[0], rel=1e-9)
+    k = int(np.argmin(np.abs(visco.freqs - reduced.reference_frequency)))
+    assert abs(reduced.frf.G_H[k] / visco.G_H[k] - 1) < 0.05
+
+
+def test_only_doubly_symmetric_modes_load_the_hub(fet, flat):
+    """The reduction to the symmetric class is exact: every other mode has zero hub gain."""
+    modes = ru.loaded_modes(fet, flat, n_modes=40)
+    scale = np.abs(modes.hub_gain).max()
+    assert np.all(np.abs(modes.hub_gain[~modes.vertical]) < 1e-8 * scale)
+    assert np.all(np.abs(modes.hub_gain[modes.vertical][:5]) > 1e-2 * scale)
+
+
+def test_bad_options(fet, flat, visco):
+    with pytest.raises(ValueError, match="frozen"):
+        ru.modal_reduction(fet, flat, visco=visco, frozen="liquid")
+    with pytest.raises(ValueError, match="storage model has no loss"):
+        ru.modal_reduction(fet, flat, visco=visco, frozen="storage", damping="model")
+    with pytest.raises(ValueError, match="anchors"):
+        ru.modal_reduction(fet, flat, visco=visco, anchors=(10.0, 100.0))

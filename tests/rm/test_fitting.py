@@ -1,0 +1,76 @@
+"""Vector fitting and the state-space tire (paper Eq. 1-4, Fig. 6)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import roadnoise_utils as ru
+from roadnoise_utils.rm.fitting import vector_fit
+from tests.rm.conftest import BAND_FREQS
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_recovers_known_8_pole_system(seed, known_system):
+    poles, _, frf = known_system(seed)
+    fit = vector_fit(BAND_FREQS, frf, n_poles=8)
+    assert np.sort_complex(fit.poles) == pytest.approx(np.sort_complex(poles), rel=1e-8)
+    assert fit.rms_error < 1e-10
+    assert fit.direct == pytest.approx(2e3, rel=1e-8)
+
+
+def test_bounded_error_with_noise(known_system):
+    poles, _, frf = known_system(3)
+    rng = np.random.default_rng(42)
+    noise = 0.01 * np.abs(frf).mean() * (rng.standard_normal(frf.size) + 1j * rng.standard_normal(frf.size))
+    fit = vector_fit(BAND_FREQS, frf + noise, n_poles=8)
+    clean_error = np.linalg.norm(fit(BAND_FREQS) - frf) / np.linalg.norm(frf)
+    assert fit.rms_error < 0.03  # the noise itself is ~1.4 % of the mean modulus
+    assert clean_error < 0.01  # the fit averages the noise out
+    assert np.sort_complex(fit.poles).imag == pytest.approx(np.sort_complex(poles).imag, rel=0.02)
+
+
+@pytest.mark.parametrize("n_poles", [5, 8, 11])
+def test_models_are_real_and_stable(flat, fet, n_poles):
+    visco = ru.frf_visco(fet, flat, BAND_FREQS, progress=False)
+    rows = visco.H[::9]
+    fits = ru.fit_tasselli(BAND_FREQS, rows, n_poles=n_poles)
+    s = 2j * np.pi * BAND_FREQS
+    for fit, data in zip(fits, rows):
+        assert fit.order == n_poles
+        assert np.all(fit.poles.real < 0)
+        # conjugate symmetry: G(-jw) = conj(G(jw)), i.e. a real impulse response
+        neg = (fit.residues[None, :] / (-s[:, None] - fit.poles[None, :])).sum(axis=1) + fit.direct
+        assert np.allclose(neg, np.conj(fit(BAND_FREQS)), rtol=1e-12, atol=1e-9 * np.abs(fit(BAND_FREQS)).max())
+        assert fit.dc_gain == pytest.approx(data[0].real, rel=1e-10)
+
+
+def test_bad_data_is_refused(known_system):
+    _, _, frf = known_system()
+    with pytest.raises(ValueError, match="NaN"):
+        vector_fit(BAND_FREQS, np.where(BAND_FREQS > 100, np.nan, frf))
+    with pytest.raises(ValueError, match="fewer than"):
+        vector_fit(BAND_FREQS[:8], frf[:8], n_poles=8)
+    with pytest.raises(ValueError, match="strictly increasing"):
+        vector_fit(BAND_FREQS[::-1], frf)
+    with pytest.raises(ValueError, match="n_poles"):
+        vector_fit(BAND_FREQS, frf, n_poles=0)
+    with pytest.raises(ValueError, match="weight"):
+        vector_fit(BAND_FREQS, frf, weight="loud")
+
+
+def test_every_tassello_within_one_percent(paper_fits):
+    assert paper_fits.rms_errors.max() < 0.01
+
+
+def test_dc_gains_are_the_static_influences(paper_fits, fet, flat):
+    static_influence = ru.frf_visco(fet, flat, [0.0], progress=False).H[:, 0].real
+    dc = np.ravel(ru.assemble_fixed_hub(paper_fits).dcgain())
+    assert np.allclose(dc, static_influence, rtol=1e-9)
+
+
+def test_at_least_as_good_as_scikit_rf(paper_fits, tire):
+    visco = ru.stages.frf_visco(tire)
+    rows = slice(0, None, 6)
+    peer_errors, _ = ru.rm.fitting_peer.skrf_vector_fit(visco.freqs, visco.H[rows], paper_fits.n_poles)
+    assert np.all(paper_fits.rms_errors[rows] <= peer_errors)

@@ -1,0 +1,102 @@
+"""The package layout keeps its promises: data flows one way, no private names cross modules,
+condition files are read only by the experiments, modules stay short, tests mirror the folders."""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import pytest
+
+from roadnoise_utils.repro.cache import PACKAGE_DIR
+
+#: Layers in the order the data flows; a module may import from its own layer or an earlier one.
+LAYERS = [
+    ["analysis", "repro.paths"],
+    ["tire"],
+    ["road"],
+    ["response"],
+    ["rm"],
+    ["vehicle"],
+    ["repro.cache", "repro.style"],
+    ["repro.stages"],
+    ["experiments"],
+    ["repro.claims", "repro.collection"],
+    ["figures"],
+    ["repro.reproduce", "repro", "__init__", "__main__"],
+]
+MAX_LINES = 500
+
+
+def _modules() -> dict[str, Path]:
+    modules = {}
+    for path in sorted(PACKAGE_DIR.rglob("*.py")):
+        parts = path.relative_to(PACKAGE_DIR).with_suffix("").parts
+        name = ".".join(parts[:-1]) if parts[-1] == "__init__" else ".".join(parts)
+        modules[name or "__init__"] = path
+    return modules
+
+
+MODULES = _modules()
+
+
+def _layer(name: str) -> int:
+    best = None
+    for k, layer in enumerate(LAYERS):
+        for prefix in layer:
+            if name == prefix or name.startswith(prefix + "."):
+                if best is None or len(prefix) > best[1]:
+                    best = (k, len(prefix))
+    assert best is not None, f"module {name} is in no layer of the layout"
+    return best[0]
+
+
+def _imports(name: str, path: Path) -> list[tuple[str, list[str]]]:
+    """(imported package module, names imported from it) for every relative import of a module."""
+    package = name.split(".") if path.name == "__init__.py" else name.split(".")[:-1]
+    if name == "__init__":
+        package = []
+    found = []
+    for node in ast.walk(ast.parse(path.read_text())):
+        if isinstance(node, ast.ImportFrom) and node.level:
+            base = package[: len(package) - (node.level - 1)]
+            module = ".".join(base + ([node.module] if node.module else []))
+            found.append((module, [a.name for a in node.names]))
+    return found
+
+
+@pytest.mark.parametrize("name", sorted(MODULES))
+def test_data_flows_one_way(name):
+    own = _layer(name)
+    for module, names in _imports(name, MODULES[name]):
+        targets = [f"{module}.{n}" if f"{module}.{n}" in MODULES else module for n in names] if module else names
+        for target in targets:
+            assert _layer(target) <= own, f"{name} (layer {own}) imports {target} (layer {_layer(target)})"
+
+
+@pytest.mark.parametrize("name", sorted(MODULES))
+def test_no_private_name_crosses_modules(name):
+    for module, names in _imports(name, MODULES[name]):
+        private = [n for n in names if n.startswith("_") and n != "__version__"]
+        assert not private, f"{name} imports private {private} from {module}"
+
+
+@pytest.mark.parametrize("name", sorted(MODULES))
+def test_only_the_experiments_read_condition_files(name):
+    source = MODULES[name].read_text()
+    reads = "load_conditions(" in source or '"conditions"' in source
+    assert not reads or name.startswith("experiments"), f"{name} reads data/conditions"
+
+
+@pytest.mark.parametrize("name", sorted(MODULES))
+def test_modules_stay_short(name):
+    lines = MODULES[name].read_text().count("\n")
+    assert lines <= MAX_LINES, f"{name}: {lines} lines"
+
+
+def test_tests_mirror_the_package_folders():
+    tests = Path(__file__).parent
+    for folder in ("tire", "road", "response", "rm", "vehicle", "experiments", "repro"):
+        assert (PACKAGE_DIR / folder).is_dir() and (tests / folder).is_dir(), folder
+        names = {p.stem.removeprefix("test_") for p in (tests / folder).glob("test_*.py")}
+        assert names <= {p.stem for p in (PACKAGE_DIR / folder).glob("*.py")}, folder
