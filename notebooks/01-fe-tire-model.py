@@ -114,7 +114,7 @@ print(f"mass matrix nnz {fet.M.nnz}, stiffness nnz {fet.K(0).nnz}")
 
 # %%
 # Fig. 3 analogue: the FET mesh
-ru.figures.fe_tire_model.plot_fet_mesh(fet)
+ru.figures.fe_tire_model.plot_fet_mesh(fet, paper_dof=ru.claims.paper_value("fe_dof"))
 plt.show()
 
 # %% [markdown]
@@ -219,7 +219,8 @@ plt.show()
 # Fig. 2 analogue: contact pressure, tassello outlines, centres (white dots) and numbers
 fig, axes = plt.subplots(1, 2, figsize=(12, 5))
 ru.figures.fe_tire_model.plot_footprint(flat, axes[0])
-axes[0].set_title(f"flat road: {flat.tasselli.n} tasselli")
+n_paper = ru.claims.paper_value("n_tasselli")  # data/paper/claims.toml
+axes[0].set_title(f"flat road: {flat.tasselli.n} tasselli (paper: {n_paper:.0f})")
 ru.figures.fe_tire_model.plot_footprint(drum, axes[1])
 axes[1].set_title(f"drum R = {drum_radius:.2f} m: {drum.tasselli.n} tasselli")
 fig.suptitle("Fig. 2 analogue: subdivision of the footprint into tasselli")

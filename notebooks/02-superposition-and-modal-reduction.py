@@ -237,7 +237,7 @@ print(shift.to_string(float_format=lambda v: f"{v:.3f}"))
 # Fig. 5 analogue: |H_tot| of FETvisco vs |sum_i H_i| of the modal models, 0-300 Hz
 f_frozen = ru.claims.paper_value("freezing_frequency")  # data/paper/claims.toml
 ax = ru.figures.superposition.plot_superposition(
-    visco, modal_frfs, f_max=300, paper={"paper: moduli frozen at": f_frozen}
+    visco, modal_frfs, f_max=300, paper={"paper: freezing frequency": f_frozen}
 )
 ax.set_title("Fig. 5 analogue: whole footprint (SISO) vs sum of the tasselli (MIMO)")
 plt.show()

@@ -294,7 +294,14 @@ from ipywidgets import FloatSlider, interact
 
 def show_cleat(speed_kmh, height_mm, base_mm):
     run = ru.experiments.cleat.run_cleat(
-        test.sections, drum, speed_kmh / 3.6, height_mm / 1e3, base_mm / 1e3, conditions.shape, (-0.1, 0.6), False
+        test.sections,
+        drum,
+        speed_kmh / 3.6,
+        height_mm / 1e3,
+        base_mm / 1e3,
+        conditions.shape,
+        distance=conditions.dynamic_distance,
+        dynamic=False,
     )
     ru.figures.cleat_test.plot_cleat_runs({f"{speed_kmh:.0f} km/h": run}, title=f"peak {run.peak_force:.0f} N")
     plt.show()

@@ -150,8 +150,8 @@ assert all(value < 0.02 for value in errors.values())
 
 # %% [markdown]
 # The moving-hub RM model reproduces the FE model with a free hub to within its fits' errors
-# (~1 %), so the superposition of Eq. 5 costs nothing: $G_H$ and the tasselli capture the
-# whole coupling.
+# (the errors printed above, against fits held within 1 %), so the superposition of Eq. 5 costs
+# nothing: $G_H$ and the tasselli capture the whole coupling.
 #
 # The hub mass takes part in the tire's vertical modes: with the hub free the peaks move
 # (compare the fixed-hub $H_{tot}$ peaks below with the hub-acceleration peaks above).
@@ -183,8 +183,8 @@ print(ru.claims.verdicts(claims))
 ru.claims.check(claims)
 
 # %% [markdown]
-# $G_H$ needs 9 poles instead of 8 for a 1 % fit of our tire (with 8 the error is ~2 %);
-# a minor difference.
+# $G_H$ needs one pole more than the paper's 8 for a 1 % fit of our tire (the `hub_poles` row
+# above, with the 8-pole error in its note); a minor difference.
 #
 # ## Explore: hub mass and suspension
 #

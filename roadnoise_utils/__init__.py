@@ -6,6 +6,7 @@ Public entry points (DESIGN section 6)::
     tire   = ru.load_tire("165_65R14")          # validated TireSpec from data/tires/*.toml
     fet    = ru.build_fet(tire)                 # FETModel: sparse M, K(omega), DOF maps
     static = ru.solve_static(fet, road="flat")  # or road="drum" (the paper's drum): footprint, tasselli
+    freqs  = ru.stages.DEFAULT_FREQS            # 0-400 Hz every 1 Hz
     visco  = ru.frf_visco(fet, static, freqs)   # direct FRFs: H_tot, H_i, G_H (fixed hub)
     reduced = ru.modal_reduction(fet, static, visco=visco)  # damping id., frozen modes, modal H_i
     fits   = ru.fit_tasselli(visco.freqs, visco.H, n_poles=14)  # one rational fit per tassello (Eq. 1)

@@ -28,8 +28,11 @@ def _strip_xz(fet: FETModel, u: np.ndarray | None, strip: int, scale: float = 1.
     return np.append(x, x[0]), np.append(z, z[0])
 
 
-def plot_fet_mesh(fet: FETModel, spoke_every: int = 6) -> plt.Figure:
-    """Fig. 3 analogue: the FET mesh, side view (rim, foundation springs, belt, tread) and 3D belt."""
+def plot_fet_mesh(fet: FETModel, spoke_every: int = 6, paper_dof: float | None = None) -> plt.Figure:
+    """Fig. 3 analogue: the FET mesh, side view (rim, foundation springs, belt, tread) and 3D belt.
+
+    ``paper_dof``: the size of the paper's FE model, shown beside ours.
+    """
     mesh = fet.mesh
     g = fet.spec.geometry
     fig = plt.figure(figsize=(11, 4.8))
@@ -59,7 +62,8 @@ def plot_fet_mesh(fet: FETModel, spoke_every: int = 6) -> plt.Figure:
     ax3.set_xlabel("x (mm)")
     ax3.set_ylabel("y (mm)")
     ax3.set_zlabel("z (mm)")
-    ax3.set_title(f"belt: {mesh.n_strips} strips x {mesh.n_elements} elements, {fet.n_dof} DOF")
+    paper = f" (paper: ~{paper_dof:.0f})" if paper_dof else ""
+    ax3.set_title(f"belt: {mesh.n_strips} strips x {mesh.n_elements} elements, {fet.n_dof} DOF{paper}")
     fig.suptitle(f"Fig. 3 analogue: the FET model of the {fet.spec.name}")
     return fig
 

@@ -63,6 +63,16 @@ def test_readme_own_road_snippet(tire, fet, flat):
     assert force.size > 1000 and np.all(np.isfinite(force)) and np.std(force) > 0
 
 
+def test_readme_own_tire_snippet():
+    """The README's Python walk through the stages, as written, on the paper's tire file."""
+    snippet = README.split("**Your own tire.**", 1)[1].split("```python", 1)[1].split("```", 1)[0]
+    namespace = {}
+    exec(compile(snippet.replace('"my_tire.toml"', '"165_65R14"'), "README", "exec"), namespace)
+    force = namespace["force"].force
+    assert namespace["tire_F"].nstates == 14 * namespace["static"].tasselli.n
+    assert np.all(np.isfinite(force)) and force.max() > 100.0
+
+
 def test_readme_own_tire_instructions(tmp_path):
     """The README's new-tire recipe: copy a tire file, edit it, run notebook 01 on it with papermill."""
     text = (REPO_ROOT / "data" / "tires" / "165_65R14.toml").read_text()
