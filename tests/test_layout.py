@@ -12,7 +12,7 @@ from roadnoise_utils.repro.cache import PACKAGE_DIR
 
 #: Layers in the order the data flows; a module may import from its own layer or an earlier one.
 LAYERS = [
-    ["analysis", "repro.paths"],
+    ["analysis", "guards", "repro.paths"],
     ["tire"],
     ["road"],
     ["response"],

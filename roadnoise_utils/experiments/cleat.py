@@ -23,6 +23,7 @@ import control
 import numpy as np
 import pandas as pd
 
+from .. import guards
 from ..analysis import damped_components, force_peaks, relative_rms_error
 from ..repro import stages
 from ..response.fe_reference import band_limited, record_length
@@ -229,15 +230,56 @@ def footprint_exit(static: StaticState, base: float) -> float:
     return float(base - np.min(t.node_x - t.node_dx_minus))
 
 
-def analyse_run(result: SimulationResult, static: StaticState, base: float, dynamic: bool) -> CleatRun:
-    """Peaks while the cleat crosses the footprint and, for a dynamic run, the free-decay components."""
+#: Free decay a dynamic run must record after the cleat has left (s): about five periods at 80 Hz.
+DECAY_DURATION = 0.06
+#: Damped components extracted from the free decay.
+DECAY_COMPONENTS = 6
+
+
+def analyse_run(
+    result: SimulationResult, static: StaticState, base: float, dynamic: bool, band: float = BAND
+) -> CleatRun:
+    """Peaks while the cleat crosses the footprint and, for a dynamic run, the free-decay components.
+
+    The decay table keeps the components inside the model's band (0-``band`` Hz); components the
+    matrix pencil finds above it are dropped, with a :class:`~roadnoise_utils.guards.RoadnoiseWarning`
+    when they carry more than 1 % of the largest amplitude. A record shorter than
+    :data:`DECAY_DURATION` after the cleat has left gives a warning (its damping ratios are not
+    reliable); one too short to analyse is refused, naming the distance it needs.
+    """
     crossing = (footprint_entry(static), footprint_exit(static, base))
     peaks = force_peaks(result.distance, result.force, n=2, window=crossing)
     decay = None
     if dynamic:
-        free = result.distance > footprint_exit(static, base) + 0.01
-        decay = damped_components(result.force[free], float(result.t[1] - result.t[0]), n_components=6)
+        start = footprint_exit(static, base) + 0.01
+        free = result.distance > start
+        dt = float(result.t[1] - result.t[0])
+        needed = max(4 * DECAY_COMPONENTS, int(DECAY_DURATION / dt))
+        where = f"distance ends {result.distance[-1]:.3f} m, the cleat ({base * 1e3:.0f} mm) has left at {start:.3f} m"
+        if free.sum() < 4 * DECAY_COMPONENTS:
+            raise ValueError(
+                f"{where}: too little free decay to analyse; valid range is distance[1] >= "
+                f"{start + needed * result.road.speed * dt:.3f} m at this speed"
+            )
+        if free.sum() < needed:
+            guards.warn(
+                f"{where}: {free.sum() * dt * 1e3:.0f} ms of free decay, under {DECAY_DURATION * 1e3:.0f} ms; its damping "
+                f"ratios are unreliable (distance[1] >= {start + needed * result.road.speed * dt:.3f} m gives enough)"
+            )
+        decay = _in_band(damped_components(result.force[free], dt, n_components=DECAY_COMPONENTS), band)
     return CleatRun(result=result, peaks=peaks, decay=decay)
+
+
+def _in_band(components: pd.DataFrame, band: float) -> pd.DataFrame:
+    """The components at or below ``band`` Hz; a warning names dropped ones that are not negligible."""
+    above = components["frequency (Hz)"] > band
+    large = above & (components["amplitude"] > 0.01 * components["amplitude"].max())
+    if large.any():
+        dropped = ", ".join(f"{f:.0f} Hz" for f in components.loc[large, "frequency (Hz)"])
+        guards.warn(f"decay components above the {band:g} Hz band of the model dropped: {dropped}", stacklevel=4)
+    kept = components[~above].reset_index(drop=True)
+    kept.index = pd.Index(range(1, len(kept) + 1), name="component")
+    return kept
 
 
 def run_cleat(
@@ -304,7 +346,9 @@ def cleat_test(
     quasi = run_cleat(
         sections, static, test.quasi_static_speed, **cleat, distance=test.quasi_static_distance, dynamic=False
     )
-    dynamic = run_cleat(sections, static, test.dynamic_speed, **cleat, distance=test.dynamic_distance, dynamic=True)
+    decay_end = footprint_exit(static, test.base) + 0.01 + test.dynamic_speed * DECAY_DURATION
+    dynamic_distance = (test.dynamic_distance[0], max(test.dynamic_distance[1], decay_end))
+    dynamic = run_cleat(sections, static, test.dynamic_speed, **cleat, distance=dynamic_distance, dynamic=True)
     comparison = None
     if fe_reference:
         road, fe_force = stages.fe_cleat_response(

@@ -18,6 +18,10 @@ cached stage function (:mod:`.stages`), which computes the stage or loads it fro
   corrupted or unreadable file is discarded with a warning and the stage recomputed.
 * **Never in the way**: a cache folder that cannot be written (read-only, a full disk, a path
   that is a file) gives a warning and the computed result.
+* **Trust**: entries are pickles. The digest detects a truncated or corrupted file, not a
+  forged one, and unpickling runs code: point ``ROADNOISE_CACHE_DIR`` only at folders you
+  trust, as for any pickle. Files get the permissions of the umask (``0644`` usually), so a
+  cache folder can be shared read-only with colleagues.
 
 The folder is ``ROADNOISE_CACHE_DIR`` (default ``<repo>/.cache``); ``ROADNOISE_CACHE=off``
 bypasses it. :data:`STATS` counts hits and computations per stage (tests use it).
@@ -197,6 +201,7 @@ def _write(path: Path, value: Any) -> None:
     payload = pickle.dumps(value, protocol=pickle.HIGHEST_PROTOCOL)
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=path.name, suffix=".tmp")
     try:
+        os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes 0600; a shared cache needs the usual permissions
         with os.fdopen(fd, "wb") as fh:
             fh.write(_MAGIC + hashlib.sha256(payload).hexdigest().encode() + payload)
             fh.flush()
@@ -205,6 +210,12 @@ def _write(path: Path, value: Any) -> None:
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
+
+
+def _umask() -> int:
+    mask = os.umask(0o022)
+    os.umask(mask)
+    return mask
 
 
 @contextlib.contextmanager

@@ -11,6 +11,7 @@ reproduction command show; :func:`write_report` writes it as CSV and Markdown.
 from __future__ import annotations
 
 import functools
+import os
 from collections.abc import Callable
 from pathlib import Path
 
@@ -288,14 +289,20 @@ def to_markdown(table: pd.DataFrame) -> str:
 
 
 def write_report(table: pd.DataFrame, folder: Path) -> tuple[Path, Path]:
-    """Write ``reproduction-report.csv`` and ``.md`` into ``folder``; returns their paths."""
+    """Write ``reproduction-report.csv`` and ``.md`` into ``folder``, each atomically; returns their paths."""
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     csv_path = folder / "reproduction-report.csv"
     md_path = folder / "reproduction-report.md"
-    table.to_csv(csv_path)
-    md_path.write_text("# Reproduction report: Belluzzo et al. (2002)\n\n" + to_markdown(table))
+    _write_atomically(csv_path, table.to_csv())
+    _write_atomically(md_path, "# Reproduction report: Belluzzo et al. (2002)\n\n" + to_markdown(table))
     return csv_path, md_path
+
+
+def _write_atomically(path: Path, text: str) -> None:
+    tmp = path.with_name(f".{path.name}.tmp")
+    tmp.write_text(text)
+    os.replace(tmp, path)
 
 
 def verdicts(table: pd.DataFrame) -> str:

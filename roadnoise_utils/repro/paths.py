@@ -41,6 +41,8 @@ def data_file(name: str | Path, folder: str, what: str) -> Path:
     path = Path(name)
     if path.suffix == ".toml" and path.exists():
         return path
+    if path.suffix and path.exists():
+        raise ValueError(f"{what} {str(name)!r}: a {what} is a .toml file, got a {path.suffix!r} file")
     candidate = data_dir() / folder / f"{name}.toml"
     if candidate.exists():
         return candidate
@@ -49,6 +51,9 @@ def data_file(name: str | Path, folder: str, what: str) -> Path:
 
 
 def read_toml(path: Path) -> dict:
-    """A TOML file as nested dicts."""
+    """A TOML file as nested dicts; a file that is not valid TOML is refused with its name and the reason."""
     with open(path, "rb") as fh:
-        return tomllib.load(fh)
+        try:
+            return tomllib.load(fh)
+        except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
+            raise ValueError(f"{Path(path).name}: not a valid TOML file ({exc})") from None

@@ -2,30 +2,39 @@
 
 ``python -m roadnoise_utils`` (the README's first command):
 
-1. runs each notebook of ``data/collection.toml`` in a fresh kernel, in order, in place (so
-   the stored outputs are the ones just computed); a failing notebook stops the run;
-2. writes every figure to ``figures/`` (``ROADNOISE_FIGURE_DIR`` or ``--figures``) as PNG,
-   named after the notebook, the paper figure it corresponds to (read from the plot cell's
-   heading comment, e.g. ``# Fig. 2 analogue: ...``) and its caption, listed in
-   ``figures/index.csv``;
-3. evaluates every claim of ``data/paper/claims.toml`` (:mod:`.claims`) and writes
-   ``reproduction-report.csv`` and ``.md`` next to the figures.
+1. runs each ready notebook of ``data/collection.toml`` in a fresh kernel, in order, with the
+   inline plotting backend whatever ``MPLBACKEND`` says (a per-cell time limit, one retry of
+   a stalled notebook); a failing notebook stops the run and names its cell;
+2. checks that every plot cell (a top-level ``plt.show()``) produced its figure;
+3. evaluates every claim of ``data/paper/claims.toml`` (:mod:`.claims`);
+4. only then writes, all at once: the figures (``figures/`` or ``--figures``, PNG, named after
+   the notebook, the paper figure they mirror — read from the plot cell's heading comment,
+   e.g. ``# Fig. 2 analogue: ...`` — and the caption, listed in ``index.csv``) and the report
+   ``reproduction-report.csv`` / ``.md`` are staged in a temporary folder that replaces the
+   old one in one rename; the notebooks are rewritten in place (each file atomically) with
+   the outputs just computed.
 
-The exit status is non-zero when a notebook fails or a claim fails that is not a documented
-known deviation.
+A failure at any step leaves ``figures/`` and the notebooks as they were. The exit status is
+non-zero when a notebook fails, a figure is missing, or a claim fails that is not a
+documented known deviation.
 """
 
 from __future__ import annotations
 
 import argparse
 import base64
+import contextlib
 import csv
+import os
 import re
+import shutil
+import tempfile
 import time
 from pathlib import Path
 
 import nbformat
 from nbclient import NotebookClient
+from nbclient.exceptions import CellExecutionError, CellTimeoutError, DeadKernelError
 from tqdm.auto import tqdm
 
 from . import claims
@@ -34,10 +43,26 @@ from .paths import REPO_ROOT, figure_dir
 
 _FIG = re.compile(r"Fig\.\s*(\d+)")
 _ANALOGUE = re.compile(r"^Fig\.\s*\d+\s*analogue:?\s*")
+#: The backend the notebooks' kernels use, whatever the environment sets (figures are their outputs).
+INLINE_BACKEND = "module://matplotlib_inline.backend_inline"
+#: Default time limit of one cell (s); the longest cell computes every claim on a cold cache (~30 s).
+CELL_TIMEOUT = 300
+#: Files of the figures folder that the reproduction writes (anything else in it is kept).
+_OWN = re.compile(r".*\.png|index\.csv|reproduction-report\.(csv|md)")
+
+
+class ReproductionError(RuntimeError):
+    """A notebook failed or stalled, or a figure is missing; nothing has been written."""
 
 
 def _slug(text: str) -> str:
     return re.sub(r"[^a-z0-9]+", "-", text.lower()).strip("-")[:48]
+
+
+def _heading(cell: nbformat.NotebookNode) -> str:
+    """The cell's first comment line (not an nbval marker): the figure's caption."""
+    lines = (ln.lstrip("# ").strip() for ln in cell.source.splitlines() if ln.startswith("#"))
+    return next((ln for ln in lines if not ln.startswith("NBVAL")), "figure")
 
 
 def figure_names(nb: nbformat.NotebookNode, stem: str) -> list[tuple[str, str, str, int, int]]:
@@ -50,14 +75,7 @@ def figure_names(nb: nbformat.NotebookNode, stem: str) -> list[tuple[str, str, s
     for c, cell in enumerate(nb.cells):
         if cell.cell_type != "code":
             continue
-        heading = next(
-            (
-                ln.lstrip("# ").strip()
-                for ln in cell.source.splitlines()
-                if ln.startswith("#") and not ln.startswith("# NBVAL")
-            ),
-            "figure",
-        )
+        heading = _heading(cell)
         for o, output in enumerate(cell.get("outputs", [])):
             if "image/png" not in output.get("data", {}):
                 continue
@@ -71,38 +89,167 @@ def figure_names(nb: nbformat.NotebookNode, stem: str) -> list[tuple[str, str, s
     return out
 
 
-def extract_figures(nb: nbformat.NotebookNode, stem: str, out_dir: Path) -> list[dict[str, str]]:
-    """Write the PNG outputs of an executed notebook; return one index row per figure."""
+def missing_figures(nb: nbformat.NotebookNode) -> list[tuple[int, str]]:
+    """``(cell number, caption)`` of every plot cell (a top-level ``plt.show()``) without a PNG output."""
+    missing = []
+    for c, cell in enumerate(nb.cells):
+        if cell.cell_type != "code" or "plt.show()" not in cell.source.splitlines():
+            continue
+        if not any("image/png" in o.get("data", {}) for o in cell.get("outputs", [])):
+            missing.append((c, _heading(cell)))
+    return missing
+
+
+def _failed_cell(nb: nbformat.NotebookNode) -> str:
+    """``cell N ('caption') failed: Error: message`` of the cell that raised."""
+    for c, cell in enumerate(nb.cells):
+        for output in cell.get("outputs", []):
+            if output.get("output_type") == "error":
+                return f"cell {c} ({_heading(cell)!r}) failed: {output['ename']}: {output['evalue']}"
+    return "a cell failed"
+
+
+def execute_notebook(path: Path, timeout: int = CELL_TIMEOUT, retries: int = 1) -> nbformat.NotebookNode:
+    """Execute a notebook in a fresh kernel (inline backend, working folder its own) and return it.
+
+    A cell running longer than ``timeout`` s, or a kernel that dies, is retried ``retries``
+    times with a new kernel; a cell that raises is not.
+
+    Raises
+    ------
+    ReproductionError
+        The notebook failed or stalled, or a plot cell produced no figure; the message names
+        the notebook and the cell.
+    """
+    env = {**os.environ, "MPLBACKEND": INLINE_BACKEND}
+    for attempt in range(retries + 1):
+        nb = nbformat.read(path, as_version=4)
+        client = NotebookClient(
+            nb,
+            timeout=timeout,
+            kernel_name="python3",
+            resources={"metadata": {"path": str(path.parent)}},
+            shutdown_kernel="immediate",  # a graceful shutdown interrupts the kernel and logs a KeyboardInterrupt
+        )
+        try:
+            client.execute(env=env)
+            break
+        except CellExecutionError as exc:
+            raise ReproductionError(f"{path.name}: {_failed_cell(nb)}") from exc
+        except (CellTimeoutError, DeadKernelError) as exc:
+            if attempt == retries:
+                stalled = "stalled" if isinstance(exc, CellTimeoutError) else "lost its kernel"
+                raise ReproductionError(
+                    f"{path.name} {stalled} ({exc.__class__.__name__}: a cell ran over the {timeout} s limit "
+                    f"or the kernel died) in {attempt + 1} attempts; raise --timeout if a cell needs longer"
+                ) from exc
+            tqdm.write(f"{path.name}: {type(exc).__name__}, retrying once with a new kernel")
+    missing = missing_figures(nb)
+    if missing:
+        cells = ", ".join(f"cell {c} ({caption!r})" for c, caption in missing)
+        raise ReproductionError(f"{path.name}: no figure from {cells}; the inline backend did not draw it")
+    return nb
+
+
+def _write_figures(executed: dict[Path, nbformat.NotebookNode], folder: Path) -> list[dict[str, str]]:
+    """Write every PNG output and ``index.csv`` into ``folder``; return the index rows."""
     rows = []
-    for name, paper, caption, c, o in figure_names(nb, stem):
-        data = nb.cells[c]["outputs"][o]["data"]["image/png"]
-        (out_dir / name).write_bytes(base64.b64decode(data))
-        rows.append({"file": name, "notebook": f"{stem}.ipynb", "paper_figure": paper, "caption": caption})
+    for path, nb in executed.items():
+        for name, paper, caption, c, o in figure_names(nb, path.stem):
+            (folder / name).write_bytes(base64.b64decode(nb.cells[c]["outputs"][o]["data"]["image/png"]))
+            rows.append({"file": name, "notebook": path.name, "paper_figure": paper, "caption": caption})
+    with open(folder / "index.csv", "w", newline="") as fh:
+        writer = csv.DictWriter(fh, fieldnames=["file", "notebook", "paper_figure", "caption"])
+        writer.writeheader()
+        writer.writerows(rows)
     return rows
 
 
-def run_notebooks(notebook_dir: Path, out_dir: Path, timeout: int = 1800) -> list[dict[str, str]]:
-    """Execute the ready notebooks in order; write their figures and the figure index."""
-    out_dir.mkdir(parents=True, exist_ok=True)
-    for old in out_dir.glob("*.png"):
-        old.unlink()
-    index = []
-    ready = [nb["file"] for nb in notebooks() if nb["status"] == "ready"]
-    for name in tqdm(ready, desc="notebooks"):
-        path = notebook_dir / name
-        nb = nbformat.read(path, as_version=4)
+def _swap_in(staging: Path, out: Path) -> None:
+    """Replace ``out`` by ``staging`` (files in ``out`` that the reproduction does not write are kept)."""
+    if out.exists():
+        for item in out.iterdir():
+            if not _OWN.fullmatch(item.name) and not (staging / item.name).exists():
+                (shutil.copytree if item.is_dir() else shutil.copy2)(item, staging / item.name)
+        backup = Path(tempfile.mkdtemp(prefix=f".{out.name}.old-", dir=out.parent))
+        backup.rmdir()
+        out.rename(backup)
+        try:
+            staging.rename(out)
+        except OSError:
+            backup.rename(out)
+            raise
+        shutil.rmtree(backup, ignore_errors=True)
+    else:
+        staging.rename(out)
+
+
+def _remove_stale(out: Path, age: float = 3600.0) -> None:
+    """Delete staging and backup folders that a killed run left beside ``out`` (older than ``age`` s)."""
+    for folder in [*out.parent.glob(f".{out.name}.new-*"), *out.parent.glob(f".{out.name}.old-*")]:
+        if time.time() - folder.stat().st_mtime > age:
+            shutil.rmtree(folder, ignore_errors=True)
+
+
+def _write_notebook(nb: nbformat.NotebookNode, path: Path) -> None:
+    """Rewrite a notebook atomically (temporary file, then rename)."""
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}", suffix=".tmp")
+    os.close(fd)
+    try:
+        nbformat.write(nb, tmp)
+        os.replace(tmp, path)
+    finally:
+        with contextlib.suppress(FileNotFoundError):
+            os.unlink(tmp)
+
+
+def reproduce(
+    paths: list[Path], out: Path, timeout: int = CELL_TIMEOUT, report: bool = True
+) -> tuple[list[dict[str, str]], object]:
+    """Execute ``paths`` in order, then write figures, index and (with ``report``) the claims report.
+
+    Returns the figure index rows and the report table (or ``None``). Raises
+    :class:`ReproductionError` before writing anything if a notebook fails or a figure is missing.
+    """
+    executed = {}
+    for path in tqdm(paths, desc="notebooks"):
         start = time.perf_counter()
-        NotebookClient(
-            nb, timeout=timeout, kernel_name="python3", resources={"metadata": {"path": str(notebook_dir)}}
-        ).execute()
-        nbformat.write(nb, path)
-        index += extract_figures(nb, path.stem, out_dir)
-        tqdm.write(f"{name}: {time.perf_counter() - start:.1f} s")
-    with open(out_dir / "index.csv", "w", newline="") as fh:
-        writer = csv.DictWriter(fh, fieldnames=["file", "notebook", "paper_figure", "caption"])
-        writer.writeheader()
-        writer.writerows(index)
-    return index
+        executed[path] = execute_notebook(path, timeout)
+        tqdm.write(f"{path.name}: {time.perf_counter() - start:.1f} s")
+    if executed and not any(figure_names(nb, p.stem) for p, nb in executed.items()):
+        raise ReproductionError("the notebooks produced no figure at all")
+    table = None
+    if report:
+        print("evaluating the paper's claims ...")
+        table = claims.report()
+    out.parent.mkdir(parents=True, exist_ok=True)
+    _remove_stale(out)
+    staging = Path(tempfile.mkdtemp(prefix=f".{out.name}.new-", dir=out.parent))
+    try:
+        rows = _write_figures(executed, staging)
+        if table is not None:
+            claims.write_report(table, staging)
+        _swap_in(staging, out)
+    except BaseException:
+        shutil.rmtree(staging, ignore_errors=True)
+        raise
+    for path, nb in executed.items():
+        _write_notebook(nb, path)
+    return rows, table
+
+
+def _summary(table, where: Path) -> int:
+    failures = claims.unexpected_failures(table)
+    deviations = table[(table["verdict"] == "fail") & (table["known deviation"] != "")]
+    print(
+        f"report: {where / 'reproduction-report.md'} and .csv: {int((table['verdict'] == 'pass').sum())} of "
+        f"{len(table)} claims reproduced, {len(deviations)} documented deviations, {len(failures)} unexpected failures"
+    )
+    for cid in failures.index:
+        print(
+            f"  FAILED: {cid}: {table.loc[cid, 'claim']} (paper {table.loc[cid, 'paper']}, ours {table.loc[cid, 'ours']})"
+        )
+    return claims.exit_status(table)
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -110,6 +257,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--notebooks", type=Path, default=REPO_ROOT / "notebooks")
     parser.add_argument("--figures", type=Path, default=None, help="output folder (default figures/)")
     parser.add_argument("--report-only", action="store_true", help="skip the notebooks, only evaluate the claims")
+    parser.add_argument(
+        "--timeout", type=int, default=CELL_TIMEOUT, help=f"per-cell limit in s (default {CELL_TIMEOUT})"
+    )
     parser.add_argument(
         "--print",
         choices=["notebook-table", "gallery"],
@@ -119,21 +269,19 @@ def main(argv: list[str] | None = None) -> int:
     if args.print:
         print(markdown_table() if args.print == "notebook-table" else gallery_markdown())
         return 0
+    if args.timeout <= 0:
+        parser.error(f"--timeout = {args.timeout} s: valid range is > 0 s")
     out = args.figures or figure_dir()
-    if not args.report_only:
-        figures = run_notebooks(args.notebooks, out)
-        print(f"{len(figures)} figures written to {out}")
-    print("evaluating the paper's claims ...")
-    table = claims.report()
-    csv_path, md_path = claims.write_report(table, out)
-    failures = claims.unexpected_failures(table)
-    deviations = table[(table["verdict"] == "fail") & (table["known deviation"] != "")]
-    print(
-        f"report: {md_path} and {csv_path.name}: {int((table['verdict'] == 'pass').sum())} of {len(table)} claims "
-        f"reproduced, {len(deviations)} documented deviations, {len(failures)} unexpected failures"
-    )
-    for cid in failures.index:
-        print(
-            f"  FAILED: {cid}: {table.loc[cid, 'claim']} (paper {table.loc[cid, 'paper']}, ours {table.loc[cid, 'ours']})"
-        )
-    return claims.exit_status(table)
+    if args.report_only:
+        print("evaluating the paper's claims ...")
+        table = claims.report()
+        claims.write_report(table, out)
+        return _summary(table, out)
+    paths = [args.notebooks / nb["file"] for nb in notebooks() if nb["status"] == "ready"]
+    try:
+        rows, table = reproduce(paths, out, args.timeout)
+    except ReproductionError as exc:
+        print(f"reproduction failed, nothing written: {exc}")
+        return 2
+    print(f"{len(rows)} figures written to {out}")
+    return _summary(table, out)

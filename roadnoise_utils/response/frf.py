@@ -25,6 +25,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 from tqdm.auto import tqdm
 
+from .. import guards
 from ..tire.ring_model import FETModel
 from ..tire.static import StaticState
 from ..tire.symmetry import symmetric_basis
@@ -162,6 +163,10 @@ def frf_visco(
     freqs = np.asarray(freqs, dtype=float)
     if freqs.ndim != 1 or freqs.size == 0 or not np.all(np.isfinite(freqs)) or np.any(freqs < 0):
         raise ValueError("freqs must be a non-empty 1-D array of finite frequencies >= 0 Hz")
+    n_points = int(static.contact.sum())
+    guards.check_memory(
+        16.0 * freqs.size * (2 * n_points + 3), f"FRFs of {n_points} points at {freqs.size} frequencies", "freqs"
+    )
     solver = HubForceSolver(loaded_tire(fet, static, stick=stick), use_symmetry=use_symmetry)
     points = np.empty((solver.loaded.n_contact, freqs.size), complex)
     hub = np.empty(freqs.size, complex)

@@ -29,6 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from .. import guards
 from ..analysis import relative_rms_error
 
 
@@ -133,6 +134,13 @@ class FitSet:
         )
 
 
+def _check_options(n_poles: int, iterations: int, tolerance: float) -> int:
+    """Validate the fitting options before any work; returns ``n_poles`` as an int."""
+    guards.integer("iterations", iterations, 1, 1000)
+    guards.real("tolerance", tolerance, 0.0, lo_open=True)
+    return guards.integer("n_poles", n_poles, 1, 200)
+
+
 def _check_data(freqs: np.ndarray, frf: np.ndarray, n_poles: int) -> None:
     if freqs.ndim != 1 or frf.shape[-1] != freqs.size:
         raise ValueError(f"frf must have the frequencies on its last axis ({freqs.size}), got shape {frf.shape}")
@@ -142,8 +150,9 @@ def _check_data(freqs: np.ndarray, frf: np.ndarray, n_poles: int) -> None:
         raise ValueError("freqs must be strictly increasing")
     if not np.all(np.isfinite(frf)):
         raise ValueError("frf contains NaN or inf")
-    if not isinstance(n_poles, (int, np.integer)) or n_poles < 1:
-        raise ValueError(f"n_poles = {n_poles}: valid range is 1, 2, 3, ...")
+    zero = np.nonzero(np.max(np.abs(frf), axis=-1) == 0)[0]
+    if zero.size:
+        raise ValueError(f"frf row(s) {zero.tolist()} are zero at every frequency: there is nothing to fit")
     unknowns = n_poles + 1
     if 2 * freqs.size < 2 * unknowns + 1:
         raise ValueError(
@@ -304,6 +313,7 @@ def _fit_many(
     enforce_dc: bool,
 ) -> list[RationalFit]:
     """Relaxed vector fitting of each row of ``frf`` (own poles per row), batched over rows."""
+    n_poles = _check_options(n_poles, iterations, tolerance)
     _check_data(freqs, frf, n_poles)
     scale = 2 * np.pi * freqs[-1]
     s = 2j * np.pi * freqs / scale
@@ -426,6 +436,11 @@ def fit_tasselli(
     H = np.atleast_2d(np.asarray(H, complex))
     if freqs.ndim != 1 or H.shape[-1] != freqs.size:
         raise ValueError(f"H must have the frequencies on its last axis ({freqs.size}), got shape {H.shape}")
+    if not np.all(np.isfinite(freqs)):
+        raise ValueError("freqs must be finite (a NaN frequency is not dropped silently)")
+    _check_options(n_poles, iterations, tolerance)
+    if f_max is not None:
+        guards.real("f_max", f_max, 0.0, lo_open=True, unit="Hz")
     band = freqs <= f_max if f_max is not None else np.ones(freqs.size, bool)
     if not band.any():
         raise ValueError(f"no frequency below f_max = {f_max} Hz")

@@ -66,6 +66,7 @@ def modal_sections(system: control.StateSpace, tol: float = 1e-12) -> ModalSecti
     sparsity pattern); each block is diagonalised on its own, so a block-diagonal model of any
     size costs nothing but its small blocks.
     """
+    system = as_continuous_statespace(system)
     if system.noutputs != 1:
         raise ValueError(f"simulate needs a single-output model (the hub force), got {system.noutputs} outputs")
     a, b, c, d = (np.asarray(m, dtype=float) for m in (system.A, system.B, system.C, system.D))
@@ -165,9 +166,31 @@ def _run(sections: ModalSections, u: np.ndarray, dt: float) -> np.ndarray:
         return sections.direct @ u + sum(pool.map(run, parts))
 
 
+def as_continuous_statespace(system) -> control.StateSpace:
+    """A continuous-time python-control ``StateSpace`` from any python-control LTI model, or a clear error.
+
+    Transfer functions are converted (``control.ss``); a discrete-time model (``dt`` set) is
+    refused: the simulation discretises the continuous model itself, exactly for its own step.
+    """
+    if not isinstance(system, control.LTI):
+        raise ValueError(
+            f"system must be a python-control StateSpace or TransferFunction (or ModalSections), got {type(system).__name__}"
+        )
+    if control.isdtime(system, strict=True):
+        raise ValueError(
+            f"system has dt = {system.dt}: simulate needs a continuous-time model (dt = 0); pass the model "
+            "before discretisation"
+        )
+    return system if isinstance(system, control.StateSpace) else control.ss(system)
+
+
 def _check_inputs(u: np.ndarray, t: np.ndarray, n_inputs: int) -> float:
-    if u.ndim != 2 or u.shape[0] != n_inputs:
-        raise ValueError(f"input has {u.shape[0] if u.ndim == 2 else u.ndim} rows; the model has {n_inputs} inputs")
+    if u.ndim != 2:
+        raise ValueError(
+            f"inputs must be 2-D, one row per model input ({n_inputs}) and one column per time sample; got {u.ndim}-D"
+        )
+    if u.shape[0] != n_inputs:
+        raise ValueError(f"input has {u.shape[0]} rows; the model has {n_inputs} inputs")
     if u.shape[1] != t.size or t.size < 2:
         raise ValueError("inputs need one column per time sample, at least two samples")
     if not np.all(np.isfinite(u)):
@@ -194,9 +217,14 @@ def simulate(system: control.StateSpace | ModalSections, road: RoadInput) -> Sim
     Zero initial state; the input varies linearly between samples (FOH), exactly as
     python-control's ``forced_response``.
     """
-    sections = system if isinstance(system, ModalSections) else modal_sections(system)
+    if not isinstance(road, RoadInput):
+        raise ValueError(f"road must be a RoadInput (t, u[input, sample]), got {type(road).__name__}")
+    if not isinstance(system, ModalSections):
+        system = as_continuous_statespace(system)
+    n_inputs = system.n_inputs if isinstance(system, ModalSections) else system.ninputs
     u = np.asarray(road.u, dtype=float)
-    dt = _check_inputs(u, np.asarray(road.t), sections.n_inputs)
+    dt = _check_inputs(u, np.asarray(road.t), n_inputs)  # before the model is decomposed
+    sections = system if isinstance(system, ModalSections) else modal_sections(system)
     return SimulationResult(t=road.t, distance=road.distance, force=_run(sections, u, dt), road=road)
 
 
@@ -205,7 +233,10 @@ def response(system: control.StateSpace, t: np.ndarray, u: np.ndarray) -> np.nda
 
     The same method as :func:`simulate`, one set of modal sections per output.
     """
-    u = np.atleast_2d(np.asarray(u, dtype=float))
+    system = as_continuous_statespace(system)
+    u = np.asarray(u, dtype=float)
+    if u.ndim == 1 and system.ninputs == 1:
+        u = u[None, :]
     t = np.asarray(t, dtype=float)
     dt = _check_inputs(u, t, system.ninputs)
     return np.array([_run(modal_sections(system[k, :]), u, dt) for k in range(system.noutputs)])

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .textures import MIN_WAVELENGTH, RoadProfile
+from .textures import MAX_HEIGHT, MIN_WAVELENGTH, RoadProfile, check_lateral_positions
 
 
 def load_road_file(path: str | Path) -> RoadProfile:
@@ -18,8 +18,13 @@ def load_road_file(path: str | Path) -> RoadProfile:
     are comments. Each belt strip uses the track nearest to its centre line.
     """
     path = Path(path)
-    with open(path) as fh:
-        lines = [line for line in fh if line.strip() and not line.startswith("#")]
+    try:
+        with open(path) as fh:
+            lines = [line for line in fh if line.strip() and not line.startswith("#")]
+    except UnicodeDecodeError:
+        raise ValueError(f"{path.name}: not a text file; a road file is CSV text (header s,z or s,z@<y>,...)") from None
+    if not lines:
+        raise ValueError(f"{path.name}: no data; a road file has a header line 's,z' (or 's,z@<y>,...') and rows")
     header = lines[0].strip().split(",")
     if header[0].strip() != "s" or len(header) < 2:
         raise ValueError(f"{path.name}: the header must be 's,z' or 's,z@<y>,z@<y>,...', got {','.join(header)!r}")
@@ -27,7 +32,12 @@ def load_road_file(path: str | Path) -> RoadProfile:
         y = np.array([0.0 if h.strip() == "z" else float(h.strip().split("@")[1]) for h in header[1:]])
     except (IndexError, ValueError) as exc:
         raise ValueError(f"{path.name}: height columns must be named 'z' or 'z@<y in m>'") from exc
-    data = np.loadtxt(lines[1:], delimiter=",", ndmin=2)
+    if len(lines) < 4:
+        raise ValueError(f"{path.name}: {len(lines) - 1} data rows; a road needs at least 3 rows (a uniform step)")
+    try:
+        data = np.loadtxt(lines[1:], delimiter=",", ndmin=2)
+    except ValueError as exc:
+        raise ValueError(f"{path.name}: every row must be numbers separated by commas ({exc})") from None
     if data.shape[1] != len(header):
         raise ValueError(f"{path.name}: {data.shape[1]} columns but {len(header)} names in the header")
     if not np.all(np.isfinite(data)):
@@ -41,5 +51,11 @@ def load_road_file(path: str | Path) -> RoadProfile:
             f"{path.name}: step {step[0] * 1e3:.1f} mm is too coarse: valid range is <= "
             f"{MIN_WAVELENGTH / 4 * 1e3:.1f} mm (4 samples per 5 cm)"
         )
+    if np.max(np.abs(z)) > MAX_HEIGHT:
+        raise ValueError(
+            f"{path.name}: heights up to {np.max(np.abs(z)):g} m: valid range is [-{MAX_HEIGHT:g}, {MAX_HEIGHT:g}] m "
+            "(heights are in metres, not millimetres)"
+        )
+    check_lateral_positions(y)
     order = np.argsort(y)
     return RoadProfile(s=s, y=y[order], z=z[order], spectrum=None, seed=None, periodic=False)

@@ -29,9 +29,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .. import guards
 from ..tire.static import StaticState
 from .kernels import strip_kernels
-from .textures import RoadSpectrum, generate_field, generate_profile
+from .textures import MAX_HEIGHT, RoadSpectrum, generate_field, generate_profile
 
 #: Simulation band of the RM model (Hz), paper abstract: "0-250 Hz".
 BAND = 250.0
@@ -113,10 +114,8 @@ def sample_rate_for(speed: float, band: float = BAND) -> float:
 
 def check_sampling(speed: float, sample_rate: float, band: float = BAND) -> None:
     """Refuse speeds and sample rates that cannot represent the band, naming the valid range."""
-    if not (np.isfinite(speed) and speed > 0):
-        raise ValueError(f"speed = {speed} m/s: valid range is (0, inf) m/s")
-    if not (np.isfinite(sample_rate) and sample_rate > 0):
-        raise ValueError(f"sample_rate = {sample_rate} Hz: must be a positive number")
+    speed = guards.real("speed", speed, 0.0, lo_open=True, unit="m/s")
+    sample_rate = guards.real("sample_rate", sample_rate, 0.0, lo_open=True, unit="Hz")
     needed = SAMPLES_PER_PERIOD * band
     if sample_rate < needed:
         raise ValueError(
@@ -169,19 +168,25 @@ def profile_input(
         (or than :data:`ROAD_GRID` when a time step covers less road; the result is then
         interpolated linearly to the time samples).
     """
-    fs = sample_rate_for(speed) if sample_rate is None else float(sample_rate)
+    speed = guards.real("speed", speed, 0.0, lo_open=True, unit="m/s")
+    fs = sample_rate_for(speed) if sample_rate is None else sample_rate
     check_sampling(speed, fs)
-    d0, d1 = distance
-    if not d1 > d0:
-        raise ValueError(f"distance = {distance}: the end must exceed the start")
+    fs = float(fs)
+    d0, d1 = _travel(distance)
+    oversample = guards.integer("oversample", oversample, 1, 64)
+    if not callable(profile):
+        raise ValueError(
+            f"profile = {profile!r} must be a function of the road coordinate: profile(s) or profile(s, y)"
+        )
     dt = 1.0 / fs
     n = int(np.floor((d1 - d0) / (speed * dt))) + 1
-    t = dt * np.arange(n)
-    distance_samples = d0 + speed * t
     # road grid: one time step of road, but no finer than ROAD_GRID (slow runs are interpolated)
     grid = max(speed * dt, min(ROAD_GRID, d1 - d0))
     n_grid = int(np.ceil((d1 - d0) / grid)) + 1
     step = grid / oversample
+    _check_input_memory(static.tasselli, n, n_grid, step, oversample)
+    t = dt * np.arange(n)
+    distance_samples = d0 + speed * t
     parts, x0 = strip_kernels(static.tasselli, step)
     n_x = parts[0][2].shape[1]
     s = x0 + d0 + step * np.arange(n_x + (n_grid - 1) * oversample)
@@ -202,26 +207,53 @@ def profile_input(
     return RoadInput(t=t, distance=distance_samples, u=u, speed=float(speed), description=description)
 
 
+def _travel(distance) -> tuple[float, float]:
+    """The travel range (m) as two finite numbers, the end beyond the start."""
+    try:
+        d0, d1 = distance
+    except (TypeError, ValueError):
+        raise ValueError(f"distance = {distance!r} must be a pair (start, end) in m") from None
+    d0 = guards.real("distance[0]", d0, unit="m")
+    d1 = guards.real("distance[1]", d1, d0, lo_open=True, unit="m (after the start)")
+    return d0, d1
+
+
+def _check_input_memory(tasselli, n: int, n_grid: int, step: float, oversample: int) -> None:
+    """Refuse inputs whose arrays would exceed the memory limit (the speed or the travel is the usual cause)."""
+    x_lo = np.min(tasselli.node_x - tasselli.node_dx_minus)
+    x_hi = np.max(tasselli.node_x + tasselli.node_dx_plus)
+    n_kernel = (x_hi - x_lo) / step + 4
+    n_fine = n_kernel + (n_grid - 1) * oversample
+    # the inputs and the grid results, the road on the fine grid, one strip's correlation windows
+    n_bytes = 8.0 * (tasselli.n * (n + 2 * n_grid) + 2 * n_fine + n_grid * n_kernel)
+    guards.check_memory(n_bytes, f"the tassello inputs ({n} samples x {tasselli.n} tasselli)", "speed and distance")
+
+
 def _heights(profile, s: np.ndarray) -> np.ndarray:
     z = np.asarray(profile(s), dtype=float)
     if z.shape != s.shape or not np.all(np.isfinite(z)):
         raise ValueError("the road profile must return finite heights, one per road coordinate")
+    if np.max(np.abs(z)) > MAX_HEIGHT:
+        raise ValueError(
+            f"road heights up to {np.max(np.abs(z)):g} m: valid range is [-{MAX_HEIGHT:g}, {MAX_HEIGHT:g}] m "
+            "(heights are in metres, not millimetres)"
+        )
     return z
 
 
 def _takes_lateral(profile) -> bool:
-    """Whether ``profile`` is a 3D road ``profile(s, y)`` (two required arguments)."""
+    """Whether ``profile`` is a 3D road ``profile(s, y)``.
 
+    It is when it takes two required positional arguments, or when its second positional
+    argument is named ``y`` (``lambda s, y=0.0: ...`` is a 3D road with a default track).
+    """
     try:
-        params = inspect.signature(profile).parameters.values()
+        params = list(inspect.signature(profile).parameters.values())
     except (TypeError, ValueError):
         return False
-    required = [
-        p
-        for p in params
-        if p.default is inspect.Parameter.empty and p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)
-    ]
-    return len(required) >= 2
+    positional = [p for p in params if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)]
+    required = [p for p in positional if p.default is inspect.Parameter.empty]
+    return len(required) >= 2 or (len(positional) >= 2 and positional[1].name == "y")
 
 
 def _strip_centres(static: StaticState) -> np.ndarray:
@@ -274,12 +306,15 @@ def texture_input(
     step : float
         Road grid of the generated profile (m), at most a fifth of the shortest wavelength.
     """
-    if not (np.isfinite(duration) and duration > 0):
-        raise ValueError(f"duration = {duration} s: valid range is (0, inf) s")
-    if not (np.isfinite(speed) and speed > 0):
-        raise ValueError(f"speed = {speed} m/s: valid range is (0, inf) m/s")
+    duration = guards.real("duration", duration, 0.0, lo_open=True, unit="s")
+    speed = guards.real("speed", speed, 0.0, lo_open=True, unit="m/s")
+    seed = guards.seed(seed)
+    fs = sample_rate_for(speed) if sample_rate is None else sample_rate
+    check_sampling(speed, fs)
+    n = int(duration * float(fs)) + 1
+    _check_input_memory(static.tasselli, n, n, speed / float(fs), 1)  # before the road is generated
     travel = duration * speed
-    length = travel + ROAD_MARGIN
+    length = max(travel + ROAD_MARGIN, spectrum.max_wavelength)  # every wavelength of the spectrum fits
     if lateral:
         road = generate_field(spectrum, length, step, contact_tracks(static), seed=seed).as_3d()
     else:

@@ -33,6 +33,7 @@ import numpy as np
 from scipy.special import gamma as gamma_fn
 from scipy.special import kv
 
+from .. import guards
 from ..repro.paths import data_file, read_toml
 
 #: ISO 8608 road classes: geometric-mean displacement PSD at n0 = 0.1 cycles/m (m^3).
@@ -41,6 +42,10 @@ ISO8608_CLASSES = {c: 16e-6 * 4**k for k, c in enumerate("ABCDEFGH")}
 ISO_N0 = 0.1
 #: Shortest wavelength the RM model resolves (m), paper abstract.
 MIN_WAVELENGTH = 0.05
+#: Largest lateral position of a road track (m): a tire footprint is well under 1 m wide.
+MAX_LATERAL = 1.0
+#: Largest road height (m) accepted: bumps and cleats are centimetres; more is a unit error.
+MAX_HEIGHT = 0.25
 
 
 @dataclass(frozen=True)
@@ -130,18 +135,26 @@ def load_texture(name: str | Path) -> RoadSpectrum:
         ) from exc
 
 
-def _grid(length: float, step: float) -> tuple[int, np.ndarray]:
-    if not (np.isfinite(step) and step > 0):
-        raise ValueError(f"step = {step} m: valid range is (0, {MIN_WAVELENGTH / 4}] m")
-    if step > MIN_WAVELENGTH / 4:
-        raise ValueError(
-            f"step = {step} m is too coarse: valid range is (0, {MIN_WAVELENGTH / 4}] m (4 samples per 5 cm)"
-        )
-    if not (np.isfinite(length) and length > 10 * step):
-        raise ValueError(f"length = {length} m: valid range is > 10 x step")
+def _grid(length: float, step: float, n_tracks: int = 1) -> tuple[int, np.ndarray]:
+    """Samples and wavenumbers of a road ``length`` m long at ``step`` m; memory checked for ``n_tracks``."""
+    step = guards.real("step", step, 0.0, MIN_WAVELENGTH / 4, lo_open=True, unit="m (4 samples per 5 cm)")
+    length = guards.real("length", length, 10 * step, lo_open=True, unit="m (more than 10 steps)")
     n = int(np.ceil(length / step))
     n += n % 2
+    # heights, complex coefficients and the coherence factors of every wavenumber
+    guards.check_memory(
+        8.0 * n * n_tracks * (3 + n_tracks), f"a road of {n} samples x {n_tracks} tracks", "length/step"
+    )
     return n, np.fft.rfftfreq(n, step)
+
+
+def _check_length(spectrum: RoadSpectrum, length: float) -> None:
+    if length < spectrum.max_wavelength:
+        guards.warn(
+            f"length = {length:g} m is shorter than the spectrum's longest wavelength ({spectrum.max_wavelength:g} m): "
+            "the road holds no wave longer than its length",
+            stacklevel=4,
+        )
 
 
 @dataclass(frozen=True, eq=False)
@@ -215,7 +228,9 @@ def generate_profile(spectrum: RoadSpectrum, length: float, step: float, seed: i
     seed : int
         Seed of ``numpy.random.default_rng``: the same seed gives the same road.
     """
+    seed = guards.seed(seed)
     n, freqs = _grid(length, step)
+    _check_length(spectrum, length)
     rng = np.random.default_rng(seed)
     amplitude = np.sqrt(2.0 * spectrum.psd(freqs) / (n * step))  # one-sided PSD x dn, dn = 1/(n step)
     phase = rng.uniform(0.0, 2.0 * np.pi, freqs.size)
@@ -238,8 +253,13 @@ def generate_field(spectrum: RoadSpectrum, length: float, step: float, y: np.nda
     Every track has the PSD of ``spectrum``; tracks ``b`` m apart are coherent for wavelengths
     much longer than ``b`` and independent for much shorter ones.
     """
-    y = np.asarray(y, dtype=float)
-    n, freqs = _grid(length, step)
+    seed = guards.seed(seed)
+    y = np.atleast_1d(np.asarray(y, dtype=float))
+    if y.ndim != 1 or y.size == 0 or not np.all(np.isfinite(y)):
+        raise ValueError(f"y = {y!r}: give one or more finite lateral positions (m)")
+    check_lateral_positions(y)
+    n, freqs = _grid(length, step, y.size)
+    _check_length(spectrum, length)
     rng = np.random.default_rng(seed)
     g = spectrum.psd(freqs)
     sep = np.round(np.abs(y[:, None] - y[None, :]), 12)
@@ -259,6 +279,15 @@ def generate_field(spectrum: RoadSpectrum, length: float, step: float, y: np.nda
     coeff = np.einsum("fij,fj->fi", factor, white) * np.sqrt(2.0 * g / (n * step))[:, None]
     z = np.fft.irfft(0.5 * n * coeff.T, n, axis=1)
     return RoadProfile(s=np.arange(n) * step, y=y, z=z, spectrum=spectrum, seed=int(seed))
+
+
+def check_lateral_positions(y: np.ndarray) -> None:
+    """Refuse lateral positions that look like millimetres (a footprint is well under 1 m wide)."""
+    if np.max(np.abs(y)) > MAX_LATERAL:
+        raise ValueError(
+            f"lateral positions up to {np.max(np.abs(y)):g} m: valid range is [-{MAX_LATERAL:g}, {MAX_LATERAL:g}] m "
+            "(positions are in metres, not millimetres)"
+        )
 
 
 def profile_psd(profile: RoadProfile, track: int = 0, segments: int = 16) -> tuple[np.ndarray, np.ndarray]:

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import numbers
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -64,7 +65,12 @@ class Operating:
 
     inflation_pressure: float = _p("Pa", 0.5e5, 5.0e5, "inflation pressure")
     vertical_load: float = _p("N", 500.0, 15000.0, "nominal vertical load")
-    rim_width: float = _p("m", 0.08, 0.30, "rim width (e.g. 4J = 4 in)")
+    rim_width: float = _p(
+        "m",
+        0.08,
+        0.30,
+        "rim width (e.g. 4J = 4 in); the ring model's sidewall foundation is calibrated, not built from it",
+    )
 
 
 @dataclass(frozen=True)
@@ -245,7 +251,7 @@ def _build_section(cls: type, values: Any, where: str, source: str) -> Any:
                 f"{source}: [{where}] is missing {f.name!r} ({meta['doc']}; {unit}, valid range [{lo:g}, {hi:g}])"
             )
         value = values[f.name]
-        if isinstance(value, bool) or not isinstance(value, (int, float)):
+        if isinstance(value, bool) or not isinstance(value, numbers.Real):
             raise ValueError(f"{source}: [{where}] {f.name} = {value!r} must be a number ({unit})")
         if meta["integer"] and not float(value).is_integer():
             raise ValueError(f"{source}: [{where}] {f.name} = {value!r} must be an integer")
@@ -275,6 +281,11 @@ def _check_consistency(spec: TireSpec, source: str) -> None:
         raise ValueError(
             f"{source}: [geometry] tread_thickness = {g.tread_thickness:g} m must be below half the section height "
             f"({0.5 * height:g} m)"
+        )
+    if spec.operating.rim_width >= g.section_width:
+        raise ValueError(
+            f"{source}: [operating] rim_width = {spec.operating.rim_width:g} m must be below section_width = "
+            f"{g.section_width:g} m"
         )
     if g.crown_drop >= g.tread_thickness:
         raise ValueError(

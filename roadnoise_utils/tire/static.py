@@ -26,7 +26,9 @@ import pandas as pd
 import scipy.linalg as sla
 import scipy.sparse.linalg as spla
 
+from .. import guards
 from .ring_model import UZ, FETModel
+from .spec import Operating
 from .tasselli import Tasselli, tassellate
 
 #: Nodes within this angle of the bottom of the tire are contact candidates (rad).
@@ -202,14 +204,26 @@ class ContactProblem:
         return u
 
 
+def check_contact_memory(n_dof: int, n_candidates: int, n_strips: int) -> None:
+    """Refuse meshes whose contact problem would exceed the memory limit, before it is factorised.
+
+    The compliance of the candidate tread points is dense (candidates^2), each batch of its
+    columns is a dense solve (DOF x candidates), and the banded factor holds about
+    DOF x 12 x strips entries (its band spans two rings of nodes, three DOF each).
+    """
+    n_bytes = 8.0 * (n_candidates**2 + n_dof * n_candidates + 12 * n_dof * n_strips)
+    guards.check_memory(n_bytes, f"the contact problem of {n_dof} DOF and {n_candidates} tread points", "[mesh]")
+
+
 def contact_problem(fet: FETModel, road: RoadSurface) -> ContactProblem:
     """Factorise the static stiffness (hub fixed) and set up the candidate tread points."""
     mesh = fet.mesh
+    theta = np.angle(np.exp(1j * mesh.theta))  # in (-pi, pi]
+    strip, node = np.nonzero(np.broadcast_to(np.abs(theta) <= CANDIDATE_ANGLE, (mesh.n_strips, mesh.n_elements)))
+    check_contact_memory(fet.n_dof, strip.size, mesh.n_strips)
     free = np.setdiff1d(np.arange(fet.n_dof), mesh.hub_dofs)
     k_static = fet.K(0.0, storage_only=True)[free][:, free].tocsc()
     lu = spla.splu(k_static, permc_spec="NATURAL")  # circumference-major numbering: banded
-    theta = np.angle(np.exp(1j * mesh.theta))  # in (-pi, pi]
-    strip, node = np.nonzero(np.broadcast_to(np.abs(theta) <= CANDIDATE_ANGLE, (mesh.n_strips, mesh.n_elements)))
     candidates = strip * mesh.n_elements + node
     tx, tz = mesh.tread_xz()
     top = tz.min()
@@ -225,6 +239,22 @@ def contact_problem(fet: FETModel, road: RoadSurface) -> ContactProblem:
         road_height0=road_height0,
         lu=lu,
     )
+
+
+def check_mesh_resolution(fet: FETModel) -> None:
+    """The contact points must resolve a row of tasselli: refuse one point per row or fewer, warn below two."""
+    spec = fet.spec
+    spacing = 2 * np.pi * spec.geometry.outer_radius / spec.mesh.n_elements
+    row = spec.tasselli.target_length
+    needed = int(np.ceil(4 * np.pi * spec.geometry.outer_radius / row))
+    message = (
+        f"[mesh] n_elements = {spec.mesh.n_elements} puts the contact points {spacing * 1e3:.1f} mm apart against "
+        f"{row * 1e3:.1f} mm rows of tasselli"
+    )
+    if spacing > row:
+        raise ValueError(f"{message}: valid range is n_elements >= {needed // 2 + 1} (n_elements >= {needed} advised)")
+    if spacing > 0.5 * row:
+        guards.warn(f"{message}: rows hold a single point; n_elements >= {needed} resolves them", stacklevel=4)
 
 
 def _tasselli_of(fet: FETModel, contact: np.ndarray) -> Tasselli:
@@ -273,10 +303,41 @@ def solve_static(
         displacement field and tasselli.
     """
     surface = make_road(road, drum_radius)
-    load = fet.spec.operating.vertical_load if load is None else float(load)
+    load = fet.spec.operating.vertical_load if load is None else check_load(load)
+    check_mesh_resolution(fet)
     problem = contact_problem(fet, surface)
     forces, delta, k_tan, iterations = problem.solve(load)
+    check_deflection(fet, delta, load)
     return _state_from_solution(problem, forces, delta, k_tan, iterations, load)
+
+
+#: Deflection / section height above which a result is doubtful (warning) or impossible (error).
+DEFLECTION_WARNING, DEFLECTION_LIMIT = 0.35, 0.60
+
+
+def check_load(load: float) -> float:
+    """A vertical load (N) within the range a tire file accepts (``[operating] vertical_load``)."""
+    lo, hi = Operating.__dataclass_fields__["vertical_load"].metadata["range"]
+    return guards.real("load", load, lo, hi, unit="N")
+
+
+def check_deflection(fet: FETModel, deflection: float, load: float) -> None:
+    """Refuse a deflection beyond :data:`DEFLECTION_LIMIT` of the section height; warn beyond :data:`DEFLECTION_WARNING`.
+
+    A linear belt on a foundation has no rim to hit: past ~60 % of the section height the tire
+    would bottom out, and past ~35 % the small-deflection model is stretched.
+    """
+    g = fet.spec.geometry
+    height = g.section_width * g.aspect_ratio
+    ratio = deflection / height
+    what = (
+        f"load = {load:g} N at {fet.spec.operating.inflation_pressure / 1e5:g} bar deflects the tire "
+        f"{deflection * 1e3:.1f} mm, {ratio:.0%} of its {height * 1e3:.0f} mm section height"
+    )
+    if ratio > DEFLECTION_LIMIT:
+        raise ValueError(f"{what}: valid range is <= {DEFLECTION_LIMIT:.0%} (lower the load or raise the pressure)")
+    if ratio > DEFLECTION_WARNING:
+        guards.warn(f"{what}; beyond {DEFLECTION_WARNING:.0%} the linear model is stretched", stacklevel=4)
 
 
 def make_road(road: str, drum_radius: float | None = None) -> RoadSurface:
@@ -347,8 +408,9 @@ def load_deflection(
     fet: FETModel, loads: np.ndarray, road: str = "flat", drum_radius: float | None = None
 ) -> np.ndarray:
     """Deflection (m) at each load (N): the load-deflection curve of the tire."""
+    loads = [check_load(w) for w in np.atleast_1d(loads)]
     problem = contact_problem(fet, make_road(road, drum_radius))
-    return np.array([problem.solve(float(w))[1] for w in np.atleast_1d(loads)])
+    return np.array([problem.solve(w)[1] for w in loads])
 
 
 def static_summary(states: dict[str, StaticState]) -> pd.DataFrame:

@@ -205,3 +205,25 @@ def test_fingerprints_follow_the_code_each_stage_runs(tmp_path, tire):
     after = fingerprints()
     assert all(after[name] != before[name] for name in stages)
     cache.code_fingerprint.cache_clear()
+
+
+def test_a_full_disk_warns_and_leaves_no_partial_file(cache_dir, monkeypatch):
+    """ENOSPC in the middle of a write: the result is returned, the temporary file removed, nothing trusted later."""
+
+    def full(*args, **kwargs):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(cache.os, "fsync", full)
+    with pytest.warns(UserWarning, match="No space left on device"):
+        assert cache.cached("demo", {"x": 9.0}, lambda: 5) == 5
+    assert not list(cache_dir.glob("*.tmp")) and not list(cache_dir.glob("*.pkl"))
+    monkeypatch.undo()
+    monkeypatch.setenv("ROADNOISE_CACHE_DIR", str(cache_dir))
+    assert cache.cached("demo", {"x": 9.0}, lambda: 6) == 6  # computed again, then stored
+    assert cache.cached("demo", {"x": 9.0}, lambda: 7) == 6
+
+
+def test_cache_files_are_readable_by_the_group(cache_dir):
+    cache.cached("demo", {"x": 10.0}, lambda: 1)
+    (entry,) = cache_dir.glob("demo-*.pkl")
+    assert entry.stat().st_mode & 0o044 == 0o044 & ~cache._umask()

@@ -105,3 +105,73 @@ def test_readme_own_tire_instructions(tmp_path):
     spec = ru.load_tire(my_tire)
     assert f"T = p b R = {spec.hoop_tension:.0f} N" in printed  # the notebook ran on the new tire
     assert re.search(r"vertical stiffness\s+-\s+\d", printed)  # no targets for it: obtained values only
+
+
+# ---------------------------------------------------------------- the reproduction is atomic
+
+
+def _notebook(path, *sources):
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(s) for s in sources])
+    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
+    nbformat.write(nb, path)
+    return path
+
+
+PLOT = "# Fig. 1 analogue: a line\nimport matplotlib.pyplot as plt\nplt.plot([0, 1])\nplt.show()"
+
+
+def test_figures_are_written_whatever_the_matplotlib_backend(tmp_path, monkeypatch):
+    """MPLBACKEND=Agg (as .ci/run exports it) once deleted every figure; the kernels now draw inline."""
+    monkeypatch.setenv("MPLBACKEND", "Agg")
+    nb = _notebook(tmp_path / "01-demo.ipynb", PLOT)
+    out = tmp_path / "figures"
+    out.mkdir()
+    (out / "stale.png").write_bytes(b"old")
+    (out / "notes.txt").write_text("mine")
+    rows, table = reproduce.reproduce([nb], out, report=False)
+    assert table is None and [r["file"] for r in rows] == ["01-demo-fig01-a-line.png"]
+    assert (out / "01-demo-fig01-a-line.png").read_bytes().startswith(b"\x89PNG")
+    assert not (out / "stale.png").exists() and (out / "notes.txt").read_text() == "mine"
+    assert (out / "index.csv").read_text().count("\n") == 2
+    assert reproduce.figure_names(nbformat.read(nb, as_version=4), nb.stem)  # the notebook keeps its outputs
+    assert not list(tmp_path.glob(".figures.*"))  # no staging folder left behind
+
+
+@pytest.mark.parametrize(
+    ("second", "message"),
+    [
+        ("raise ValueError('broken stage')", "cell 0 .* failed: ValueError: broken stage"),
+        ("# a plot that draws nothing\nimport matplotlib.pyplot as plt\nplt.show()", "no figure from cell 0"),
+    ],
+)
+def test_a_failure_writes_nothing(tmp_path, second, message):
+    first = _notebook(tmp_path / "01-good.ipynb", PLOT)
+    bad = _notebook(tmp_path / "02-bad.ipynb", second)
+    before = {p: p.read_bytes() for p in (first, bad)}
+    out = tmp_path / "figures"
+    out.mkdir()
+    (out / "previous.png").write_bytes(b"kept")
+    with pytest.raises(reproduce.ReproductionError, match=message):
+        reproduce.reproduce([first, bad], out, report=False)
+    assert [p.name for p in out.iterdir()] == ["previous.png"]
+    assert all(p.read_bytes() == data for p, data in before.items())
+
+
+def test_a_stalled_notebook_is_retried_once(tmp_path):
+    marker = tmp_path / "first-attempt"
+    stall = f"import pathlib, time\nm = pathlib.Path({str(marker)!r})\nif not m.exists():\n    m.touch()\n    time.sleep(60)"
+    nb = _notebook(tmp_path / "01-slow.ipynb", stall, PLOT)
+    rows, _ = reproduce.reproduce([nb], tmp_path / "figures", timeout=3, report=False)
+    assert marker.exists() and len(rows) == 1
+
+
+def test_main_exits_non_zero_and_keeps_the_figures_on_failure(tmp_path, monkeypatch):
+    notebooks = tmp_path / "notebooks"
+    notebooks.mkdir()
+    _notebook(notebooks / "00-overview.ipynb", "1 / 0")
+    out = tmp_path / "figures"
+    out.mkdir()
+    (out / "kept.png").write_bytes(b"x")
+    monkeypatch.setattr(reproduce, "notebooks", lambda: [{"file": "00-overview.ipynb", "status": "ready"}])
+    assert reproduce.main(["--notebooks", str(notebooks), "--figures", str(out)]) == 2
+    assert [p.name for p in out.iterdir()] == ["kept.png"]

@@ -1,0 +1,99 @@
+"""Guards every stage uses on its input: the package's warning, memory limits, number checks.
+
+The rule (README, "Bad input, warnings and limits"): what cannot be computed, or would be physically impossible,
+raises ``ValueError`` naming the argument, its value and the valid range, before any work is
+done; what is valid but doubtful (a tire loaded to a third of its section height, a road
+shorter than its longest wavelength, a decay component outside the fitted band) gives a
+:class:`RoadnoiseWarning`, which users can filter like any warning category. Allocations that
+grow with the input are estimated first and refused above :func:`memory_limit`
+(:class:`ResourceLimitError`), never left to a ``MemoryError`` or a swap storm.
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+import os
+import warnings
+
+#: Default limit of one estimated allocation (bytes): a quarter of a 16 GB machine.
+DEFAULT_MEMORY_LIMIT = 4 * 1024**3
+
+
+class RoadnoiseWarning(UserWarning):
+    """Valid but doubtful input or result (like scipy's ``OptimizeWarning``)."""
+
+
+class ResourceLimitError(ValueError):
+    """An input would need more memory than :func:`memory_limit` allows."""
+
+
+def memory_limit() -> int:
+    """Largest estimated allocation a stage may make (bytes): ``ROADNOISE_MAX_BYTES`` or 4 GiB."""
+    value = os.environ.get("ROADNOISE_MAX_BYTES")
+    if value is None:
+        return DEFAULT_MEMORY_LIMIT
+    try:
+        limit = int(float(value))
+    except ValueError:
+        raise ValueError(f"ROADNOISE_MAX_BYTES = {value!r}: give a number of bytes, e.g. 8e9") from None
+    if limit <= 0:
+        raise ValueError(f"ROADNOISE_MAX_BYTES = {value!r}: valid range is > 0 bytes")
+    return limit
+
+
+def check_memory(n_bytes: float, what: str, parameter: str) -> None:
+    """Refuse an allocation of ``n_bytes`` (estimated) for ``what``, caused by ``parameter``, above the limit."""
+    limit = memory_limit()
+    if n_bytes > limit:
+        raise ResourceLimitError(
+            f"{parameter}: {what} would need about {n_bytes / 1024**3:.1f} GiB, above the limit of "
+            f"{limit / 1024**3:.1f} GiB (set ROADNOISE_MAX_BYTES to raise it)"
+        )
+
+
+def warn(message: str, stacklevel: int = 3) -> None:
+    """Issue a :class:`RoadnoiseWarning` pointing at the caller's caller."""
+    warnings.warn(message, RoadnoiseWarning, stacklevel=stacklevel)
+
+
+def _range_text(lo: float, hi: float, lo_open: bool, hi_open: bool, unit: str) -> str:
+    left = "(" if lo_open else "["
+    right = ")" if hi_open or math.isinf(hi) else "]"
+    return f"{left}{lo:g}, {hi:g}{right}" + (f" {unit}" if unit else "")
+
+
+def real(
+    name: str,
+    value: object,
+    lo: float = -math.inf,
+    hi: float = math.inf,
+    *,
+    lo_open: bool = False,
+    hi_open: bool = False,
+    unit: str = "",
+) -> float:
+    """``value`` as a float if it is a finite real number in the range, else ``ValueError`` naming ``name``."""
+    valid = _range_text(lo, hi, lo_open, hi_open, unit)
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise ValueError(f"{name} = {value!r} must be a number; valid range is {valid}")
+    x = float(value)
+    inside = (lo < x if lo_open else lo <= x) and (x < hi if hi_open else x <= hi)
+    if not (math.isfinite(x) and inside):
+        raise ValueError(f"{name} = {value!r}: valid range is {valid}")
+    return x
+
+
+def integer(name: str, value: object, lo: int = 0, hi: float = math.inf) -> int:
+    """``value`` as an int if it is a whole number (int, numpy integer, or integral float) in ``[lo, hi]``."""
+    valid = f"integers in [{lo}, {hi:g}]" if math.isfinite(hi) else f"integers >= {lo}"
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise ValueError(f"{name} = {value!r} must be an integer; valid range is {valid}")
+    if not (math.isfinite(float(value)) and float(value).is_integer() and lo <= value <= hi):
+        raise ValueError(f"{name} = {value!r}: valid range is {valid}")
+    return int(value)
+
+
+def seed(value: object) -> int:
+    """A random-road seed: a non-negative integer (the same seed gives the same road)."""
+    return integer("seed", value, 0)
