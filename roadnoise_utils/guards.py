@@ -28,17 +28,17 @@ class ResourceLimitError(ValueError):
     """An input would need more memory than :func:`memory_limit` allows."""
 
 
-def memory_limit() -> int:
+def memory_limit() -> float:
     """Largest estimated allocation a stage may make (bytes): ``ROADNOISE_MAX_BYTES`` or 4 GiB."""
     value = os.environ.get("ROADNOISE_MAX_BYTES")
     if value is None:
         return DEFAULT_MEMORY_LIMIT
     try:
-        limit = int(float(value))
+        limit = float(value)
     except ValueError:
         raise ValueError(f"ROADNOISE_MAX_BYTES = {value!r}: give a number of bytes, e.g. 8e9") from None
-    if limit <= 0:
-        raise ValueError(f"ROADNOISE_MAX_BYTES = {value!r}: valid range is > 0 bytes")
+    if not limit > 0:
+        raise ValueError(f"ROADNOISE_MAX_BYTES = {value!r}: valid range is > 0 bytes (inf for no limit)")
     return limit
 
 

@@ -240,3 +240,177 @@ def test_bad_fitting_data():
 def test_conditions_files_are_read_by_name_or_path():
     path = data_dir() / "conditions" / "cleat_test.toml"
     assert ru.experiments.conditions.load_conditions(path) == ru.experiments.conditions.load_conditions("cleat_test")
+
+
+# ---------------------------------------------------------------- the second audit (helper review of issue 11)
+
+
+def test_an_fe_model_and_a_static_state_of_different_tires_are_refused(tire, fet, coarse_flat):
+    with pytest.raises(ValueError, match="static was solved for another tire than fet: mesh.n_elements"):
+        ru.frf_visco(fet, coarse_flat, [0.0], progress=False)
+    softer = ru.build_fet(tire.replace(**{"operating.inflation_pressure": 1.5e5}))
+    with pytest.raises(ValueError, match=r"operating.inflation_pressure \(230000.0 vs 150000.0\)"):
+        ru.frf_visco(softer, ru.solve_static(fet), [0.0], progress=False)
+
+
+@pytest.mark.parametrize(
+    ("call", "message"),
+    [
+        (lambda: ru.solve_static("165_65R14"), "fet must be an FETModel .* ru.stages.solve_static takes a tire name"),
+        (lambda: ru.assemble_fixed_hub("fits"), "fits must be a FitSet or a list of RationalFit"),
+        (lambda: ru.assemble_fixed_hub([np.ones(3)]), "fits must hold RationalFit objects"),
+        (lambda: ru.road.profile_input(None, lambda s: 0 * s, 5.0, (0, 0.01)), "static must be a StaticState"),
+        (lambda: ru.load_tire(123), "tire file: give a name"),
+        (lambda: ru.road.load_road_file("/tmp"), "does not exist or is not a file"),
+    ],
+)
+def test_wrong_types_are_named(call, message):
+    with pytest.raises((TypeError, ValueError, FileNotFoundError), match=message):
+        call()
+
+
+def test_a_texture_name_is_a_spectrum(flat):
+    by_name = ru.textures.generate_profile("rough", 60.0, 0.004, seed=2)
+    assert np.array_equal(by_name.z, ru.textures.generate_profile(ROUGH, 60.0, 0.004, seed=2).z)
+    with pytest.raises(ValueError, match="lateral = 'no' must be True"):
+        ru.road.texture_input(flat, "rough", 20.0, 0.2, 1, lateral="no")
+
+
+def test_modal_reduction_refuses_a_visco_that_is_not_an_frf(fet, flat):
+    with pytest.raises(TypeError, match="visco must be the FRFResult"):
+        ru.modal_reduction(fet, flat, visco="x")
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "message"),
+    [
+        ({"dynamic_kmh": 0.0}, r"dynamic_kmh = 0.0: valid range is \(0, 360\] km/h"),
+        ({"dynamic_kmh": -30.0}, "dynamic_kmh = -30.0"),
+        ({"height": "x"}, "height = 'x' must be a number"),
+        ({"shape": 5}, "shape = 5: valid values are"),
+        ({"drum_radius": 1250.0}, r"drum_radius = 1250.0: valid range is \(0.3, 20\] m"),
+    ],
+)
+def test_cleat_conditions_are_checked_when_resolved(kwargs, message):
+    with pytest.raises(ValueError, match=message):
+        ru.experiments.cleat_conditions(**kwargs)
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "message"),
+    [
+        ({"seed": 1.7}, "seed = 1.7"),
+        ({"seed": "abc"}, "seed = 'abc' must be an integer"),
+        ({"textures": "rough"}, "give a non-empty list of texture names"),
+        ({"textures": []}, "give a non-empty list of texture names"),
+        ({"duration": 0}, r"duration = 0: valid range is \(0, inf\) s"),
+    ],
+)
+def test_road_test_conditions_are_checked_when_resolved(kwargs, message):
+    with pytest.raises(ValueError, match=message):
+        ru.experiments.road_test_conditions(**kwargs)
+
+
+@pytest.mark.parametrize(
+    ("freqs", "message"),
+    [
+        ([-50.0, 50.0], "freqs must be a non-empty 1-D array of finite frequencies >= 0 Hz"),
+        ([], "non-empty"),
+        (np.ones((2, 2)), "1-D"),
+    ],
+    ids=["negative frequency", "no frequency", "2-D frequencies"],
+)
+def test_moving_hub_check_refuses_before_any_work(freqs, message):
+    with pytest.raises(ValueError, match=message):
+        ru.experiments.moving_hub_check(freqs=freqs)
+
+
+def test_a_negative_suspension_mass_is_refused_when_built():
+    with pytest.raises(ValueError, match=r"mass = -32.0: valid range is \[0, 10000\] kg"):
+        ru.experiments.Suspension(-32.0, 2e4, 3e3)
+    with pytest.raises(ValueError, match="mass = 'heavy' must be a number"):
+        ru.experiments.suspension_conditions(mass="heavy")
+
+
+def test_a_hand_built_quarter_car_is_validated():
+    car = ru.vehicle.load_vehicle("midsize_195_65R15")
+    masses = {**car.masses, "unsprung": -32.0}
+    with pytest.raises(ValueError, match=r"QuarterCar: mass 'unsprung' = -32.0: valid range"):
+        ru.vehicle.QuarterCar(car.name, car.tire, masses, car.elements, car.hub, car.upper_mount)
+
+
+@pytest.mark.parametrize(
+    ("edit", "message"),
+    [
+        (lambda t: t.replace("damping = 3000.0", "dampng = 3000.0", 1), r"missing \['damping'\]"),
+        (lambda t: t.replace('tire = "195_65R15"', 'tire = "195_65R15"\nwheelbase_mm = 2600'), "unknown key"),
+        (lambda t: t.replace("[masses]", "[weights]"), r"missing \['masses'\]"),
+        (lambda t: t.replace('between = ["rod", "tower"]', 'between = ["rod"]'), "give two mass names"),
+        (lambda t: t.replace("stiffness = 3.1e6", 'stiffness = "stiff"'), "stiffness = 'stiff' must be a number"),
+        (lambda t: t.replace("body = 350.0", 'body = "heavy"'), "mass 'body' = 'heavy' must be a number"),
+    ],
+    ids=["misspelt damping", "unknown key", "no masses", "one end", "string stiffness", "string mass"],
+)
+def test_bad_vehicle_files_name_what_is_wrong(tmp_path, edit, message):
+    text = (data_dir() / "vehicles" / "midsize_195_65R15.toml").read_text()
+    path = tmp_path / "car.toml"
+    path.write_text(edit(text))
+    with pytest.raises(ValueError, match=message):
+        ru.vehicle.load_vehicle(path)
+
+
+def test_unit_slips_in_speeds_and_frequencies(drum, fet, flat):
+    with pytest.raises(ValueError, match=r"speed = 432.0: valid range is \(0, 100\] m/s"):
+        ru.cleat_input(drum, 432.0)
+    with pytest.warns(RoadnoiseWarning, match="beyond 2000 Hz"):
+        ru.frf_visco(fet, flat, [1e6], progress=False)
+
+
+def test_an_unstable_model_is_flagged():
+    t = np.arange(200) / 1e4
+    road = ru.RoadInput(t=t, distance=t, u=np.ones((1, t.size)), speed=1.0, description="step")
+    with pytest.warns(RoadnoiseWarning, match="1 unstable pole"):
+        ru.simulate(control.tf([1.0], [1.0, -200.0]), road)
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "message"),
+    [
+        ({"H": np.ones((2, 3, 100))}, r"H must be 1-D or 2-D"),
+        ({"weight": np.ones(7)}, "one weight per frequency"),
+        ({"H": ["x"] * 100}, "frf must be numbers"),
+    ],
+)
+def test_bad_fitting_shapes(kwargs, message):
+    f = np.arange(0.0, 100.0)
+    args = {"H": 1.0 / (1.0 + 1j * f / 30.0), **kwargs}
+    with pytest.raises(ValueError, match=message):
+        ru.fit_tasselli(f, args.pop("H"), **args)
+    with pytest.raises(ValueError, match="frf must be 1-D"):
+        ru.vector_fit(f, np.ones((2, 100)))
+
+
+def test_road_files_with_a_byte_order_mark_or_duplicate_tracks(tmp_path):
+    rows = "\n".join(f"{0.002 * k:.3f},0.0,0.0" for k in range(10))
+    bom = tmp_path / "excel.csv"
+    bom.write_text("\ufeffs,z@0.0,z@0.1\n" + rows + "\n", encoding="utf-8")
+    assert ru.road.load_road_file(bom).z.shape == (2, 10)
+    dup = tmp_path / "dup.csv"
+    dup.write_text("s,z@0,z@0.0\n" + rows + "\n")
+    with pytest.raises(ValueError, match="two height columns at one lateral position"):
+        ru.road.load_road_file(dup)
+
+
+def test_complex_heights_and_an_infinite_memory_limit(flat, monkeypatch):
+    with pytest.raises(ValueError, match="complex heights"):
+        ru.road.profile_input(flat, lambda s: (1 + 1j) * 1e-3 * np.ones_like(s), 5.0, (0.0, 0.01))
+    monkeypatch.setenv("ROADNOISE_MAX_BYTES", "inf")
+    assert ru.guards.memory_limit() == float("inf")
+
+
+def test_reproduce_names_a_missing_notebook_folder(tmp_path, capsys):
+    from roadnoise_utils.repro import reproduce
+
+    with pytest.raises(SystemExit):
+        reproduce.main(["--notebooks", str(tmp_path / "nowhere")])
+    assert "missing" in capsys.readouterr().err

@@ -38,6 +38,10 @@ from .conditions import load_conditions, resolve
 
 #: The paper's tire for this test.
 PAPER_TIRE = "165_65R14"
+#: Cleat shapes (:func:`roadnoise_utils.road.cleat.cleat_profile`).
+CLEAT_SHAPES = ("triangle", "rectangle", "half-sine")
+#: Fastest speed accepted (km/h): a test drum or a road car; more is a unit slip.
+MAX_SPEED_KMH = 360.0
 
 
 @dataclass(frozen=True)
@@ -103,19 +107,33 @@ def cleat_conditions(
     table = load_conditions("cleat_test")
     cleat = resolve(table, "cleat", height=height, base=base, shape=shape)
     speeds = resolve(table, "speeds", dynamic_kmh=dynamic_kmh, quasi_static_kmh=quasi_static_kmh)
-    runs = table["runs"]
+    runs = resolve(table, "runs", quasi_static_distance=None, dynamic_distance=None, fe_distance=None, fe_duration=None)
+    if cleat["shape"] not in CLEAT_SHAPES:
+        raise ValueError(f"shape = {cleat['shape']!r}: valid values are {list(CLEAT_SHAPES)}")
     return CleatConditions(
-        drum_radius=float(resolve(table, "drum", radius=drum_radius)["radius"]),
-        shape=str(cleat["shape"]),
-        height=float(cleat["height"]),
-        base=float(cleat["base"]),
-        dynamic_kmh=float(speeds["dynamic_kmh"]),
-        quasi_static_kmh=float(speeds["quasi_static_kmh"]),
-        quasi_static_distance=tuple(runs["quasi_static_distance"]),
-        dynamic_distance=tuple(runs["dynamic_distance"]),
-        fe_distance=tuple(runs["fe_distance"]),
-        fe_duration=float(runs["fe_duration"]),
+        drum_radius=guards.real(
+            "drum_radius", resolve(table, "drum", radius=drum_radius)["radius"], 0.3, 20.0, lo_open=True, unit="m"
+        ),
+        shape=cleat["shape"],
+        height=guards.real("height", cleat["height"], 0.0, 0.1, lo_open=True, unit="m"),
+        base=guards.real("base", cleat["base"], 0.0, 0.5, lo_open=True, unit="m"),
+        dynamic_kmh=guards.real("dynamic_kmh", speeds["dynamic_kmh"], 0.0, MAX_SPEED_KMH, lo_open=True, unit="km/h"),
+        quasi_static_kmh=guards.real(
+            "quasi_static_kmh", speeds["quasi_static_kmh"], 0.0, MAX_SPEED_KMH, lo_open=True, unit="km/h"
+        ),
+        quasi_static_distance=_pair("quasi_static_distance", runs["quasi_static_distance"]),
+        dynamic_distance=_pair("dynamic_distance", runs["dynamic_distance"]),
+        fe_distance=_pair("fe_distance", runs["fe_distance"]),
+        fe_duration=guards.real("fe_duration", runs["fe_duration"], 0.0, 60.0, lo_open=True, unit="s"),
     )
+
+
+def _pair(name: str, value: object) -> tuple[float, float]:
+    """A travel range (start, end) in m, the end beyond the start."""
+    if not (isinstance(value, (list, tuple)) and len(value) == 2):
+        raise ValueError(f"{name} = {value!r} must be a pair (start, end) in m")
+    start = guards.real(f"{name}[0]", value[0], unit="m")
+    return start, guards.real(f"{name}[1]", value[1], start, lo_open=True, unit="m (after the start)")
 
 
 @dataclass(frozen=True, eq=False)

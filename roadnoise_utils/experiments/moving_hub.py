@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .. import guards
 from ..analysis import relative_rms_error
 from ..repro import stages
 from ..response.fe_reference import fe_moving_hub
@@ -34,13 +35,18 @@ class Suspension:
     stiffness: float
     damping: float
 
+    def __post_init__(self) -> None:
+        guards.real("mass", self.mass, 0.0, 1e4, unit="kg")
+        guards.real("stiffness", self.stiffness, 0.0, 1e9, unit="N/m")
+        guards.real("damping", self.damping, 0.0, 1e7, unit="N s/m")
+
 
 def suspension_conditions(
     mass: float | None = None, stiffness: float | None = None, damping: float | None = None
 ) -> Suspension:
     """The check's suspension (``data/conditions/moving_hub_check.toml``, read once), any value given overriding it."""
     hub = resolve(load_conditions("moving_hub_check"), "hub", mass=mass, stiffness=stiffness, damping=damping)
-    return Suspension(float(hub["mass"]), float(hub["stiffness"]), float(hub["damping"]))
+    return Suspension(hub["mass"], hub["stiffness"], hub["damping"])
 
 
 @dataclass(frozen=True, eq=False)
@@ -91,9 +97,15 @@ def moving_hub_check(
 
     ``freqs`` (Hz) default to 1-250 Hz every 1 Hz; ``suspension`` to :func:`suspension_conditions`.
     """
-    spec = stages.load_tire(tire)
     freqs = np.arange(1.0, 251.0) if freqs is None else np.asarray(freqs, float)
+    if freqs.ndim != 1 or freqs.size == 0 or not np.all(np.isfinite(freqs)) or np.any(freqs < 0):
+        raise ValueError("freqs must be a non-empty 1-D array of finite frequencies >= 0 Hz")
     hub_suspension = suspension_conditions() if suspension is None else suspension
+    if not isinstance(hub_suspension, Suspension):
+        raise TypeError(
+            f"suspension must be a Suspension(mass, stiffness, damping), got {type(hub_suspension).__name__}"
+        )
+    spec = stages.load_tire(tire)
     values = (hub_suspension.mass, hub_suspension.stiffness, hub_suspension.damping)
     fet = stages.build_fet(spec)
     fits, hub = stages.fit_tasselli(spec), stages.fit_hub(spec)

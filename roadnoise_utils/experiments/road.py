@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .. import guards
 from ..repro import stages
 from ..road.input import RoadInput, texture_input
 from ..road.textures import RoadSpectrum, load_texture
@@ -70,12 +71,17 @@ def road_test_conditions(
         seed=seed,
         sample_rate=sample_rate,
     )
+    names = values["textures"]
+    if isinstance(names, str) or not isinstance(names, (list, tuple)) or not names:
+        raise ValueError(f"textures = {names!r}: give a non-empty list of texture names, e.g. ['rough']")
+    if not all(isinstance(n, str) for n in names):
+        raise ValueError(f"textures = {names!r}: every texture is a name in data/roads or a path")
     return RoadTestConditions(
-        speed_kmh=float(values["speed_kmh"]),
-        textures=tuple(values["textures"]),
-        duration=float(values["duration"]),
-        seed=int(values["seed"]),
-        sample_rate=float(values["sample_rate"]),
+        speed_kmh=guards.real("speed_kmh", values["speed_kmh"], 0.0, 360.0, lo_open=True, unit="km/h"),
+        textures=tuple(names),
+        duration=guards.real("duration", values["duration"], 0.0, lo_open=True, unit="s"),
+        seed=guards.seed(values["seed"]),
+        sample_rate=guards.real("sample_rate", values["sample_rate"], 0.0, lo_open=True, unit="Hz"),
     )
 
 

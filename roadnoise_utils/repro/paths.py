@@ -38,6 +38,8 @@ def data_file(name: str | Path, folder: str, what: str) -> Path:
         Neither exists; the message lists the available stems. ``what`` names the kind of
         file in that message (``"tire file"``, ``"road texture"``...).
     """
+    if not isinstance(name, (str, Path)):
+        raise TypeError(f"{what}: give a name (str) or a path to a .toml file, got {type(name).__name__}")
     path = Path(name)
     if path.suffix == ".toml" and path.exists():
         return path

@@ -278,6 +278,9 @@ def main(argv: list[str] | None = None) -> int:
         claims.write_report(table, out)
         return _summary(table, out)
     paths = [args.notebooks / nb["file"] for nb in notebooks() if nb["status"] == "ready"]
+    missing = [str(p) for p in paths if not p.is_file()]
+    if missing:
+        parser.error(f"--notebooks {args.notebooks}: missing {', '.join(missing)}")
     try:
         rows, table = reproduce(paths, out, args.timeout)
     except ReproductionError as exc:

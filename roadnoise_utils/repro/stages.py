@@ -31,7 +31,7 @@ from ..response import modal_reduction as modal
 from ..response.frf import FRFResult
 from ..response.modal_reduction import ModalReduction
 from ..response.modes import LoadedModes
-from ..rm import fitting, moving_hub, realisation
+from ..rm import fitting, moving_hub, order, realisation
 from ..rm.fitting import FitSet
 from ..road.input import BAND, RoadInput
 from ..tire import ring_model, spec, static
@@ -167,7 +167,7 @@ def fit_tasselli(
     """Cached rational fits (Eq. 1) of the direct local FRFs :math:`H_i` over 0-``f_max`` Hz.
 
     ``n_poles=None`` takes the lowest order at which every tassello is fitted within
-    :data:`FIT_TOLERANCE` (:func:`roadnoise_utils.rm.fitting.lowest_order`; notebook 03 shows
+    :data:`FIT_TOLERANCE` (:func:`roadnoise_utils.rm.order.lowest_order`; notebook 03 shows
     why the direct FRFs and this order).
     """
     inputs = _loaded(tire, road, load, drum_radius)
@@ -176,10 +176,12 @@ def fit_tasselli(
 
     def compute() -> FitSet:
         if n_poles is None:
-            return fitting.lowest_order(visco.freqs, visco.H, tolerance=FIT_TOLERANCE, f_max=f_max)
+            return order.lowest_order(visco.freqs, visco.H, tolerance=FIT_TOLERANCE, f_max=f_max)
         return fitting.fit_tasselli(visco.freqs, visco.H, n_poles=n_poles, f_max=f_max)
 
-    return cached(fit_tasselli, {**inputs, **options}, compute, runs=(fitting.fit_tasselli, frf.frf_visco))
+    return cached(
+        fit_tasselli, {**inputs, **options}, compute, runs=(fitting.fit_tasselli, order.lowest_order, frf.frf_visco)
+    )
 
 
 def fit_hub(

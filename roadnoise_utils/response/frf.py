@@ -31,6 +31,9 @@ from ..tire.static import StaticState
 from ..tire.symmetry import symmetric_basis
 from .loaded import LoadedTire, loaded_tire
 
+#: Highest frequency the FE tire is meant for (Hz); the RM model needs up to 400 Hz, modes to ~800 Hz.
+MAX_FREQUENCY = 2000.0
+
 
 @dataclass(frozen=True, eq=False)
 class FRFResult:
@@ -163,6 +166,11 @@ def frf_visco(
     freqs = np.asarray(freqs, dtype=float)
     if freqs.ndim != 1 or freqs.size == 0 or not np.all(np.isfinite(freqs)) or np.any(freqs < 0):
         raise ValueError("freqs must be a non-empty 1-D array of finite frequencies >= 0 Hz")
+    if freqs.max() > MAX_FREQUENCY:
+        guards.warn(
+            f"freqs reach {freqs.max():g} Hz: beyond {MAX_FREQUENCY:g} Hz the belt mesh and the tread springs no longer "
+            "describe a tire (the RM model is built for 0-400 Hz)"
+        )
     n_points = int(static.contact.sum())
     guards.check_memory(
         16.0 * freqs.size * (2 * n_points + 3), f"FRFs of {n_points} points at {freqs.size} frequencies", "freqs"

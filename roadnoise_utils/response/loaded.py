@@ -25,7 +25,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from ..tire.ring_model import UX, UZ, FETModel
-from ..tire.static import StaticState
+from ..tire.static import StaticState, check_same_tire
 
 
 @dataclass(frozen=True, eq=False)
@@ -128,6 +128,7 @@ def loaded_tire(fet: FETModel, static: StaticState, stick: bool = True) -> Loade
     spring): the paper's check that "lateral and longitudinal displacements of the footprint
     nodes give an insignificant contribution" to the vertical hub force.
     """
+    check_same_tire(fet, static)
     mesh = fet.mesh
     free = np.setdiff1d(np.arange(fet.n_dof), mesh.hub_dofs)
     hub = mesh.hub_dofs[1]

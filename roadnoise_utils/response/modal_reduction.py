@@ -431,6 +431,8 @@ def modal_reduction(
         raise ValueError(f"f_band = {f_band} Hz: valid range is (0, inf)")
     if visco is None:
         visco = frf_visco(fet, static, np.arange(0.0, f_band + 1.0, 1.0), progress=progress)
+    if not isinstance(visco, FRFResult):
+        raise TypeError(f"visco must be the FRFResult of ru.frf_visco(fet, static, freqs), got {type(visco).__name__}")
     ident = identify_modes(visco.freqs, visco.H_tot, f_max=f_band)
     if reference_frequency is None:
         reference_frequency = float(ident.freqs[np.argmax(np.abs(ident.static_share))])

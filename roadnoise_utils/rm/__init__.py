@@ -6,9 +6,10 @@ into the block-diagonal fixed-hub tire (Eq. 2-4) -> ``moving_hub`` adds :math:`G
 (Eq. 5-7) -> ``simulation`` drives either with tassello inputs in the time domain.
 """
 
-from . import fitting, fitting_peer, moving_hub, realisation, simulation
-from .fitting import FitSet, RationalFit, fit_tasselli, lowest_order, order_scan, vector_fit
+from . import fitting, fitting_peer, moving_hub, order, realisation, simulation
+from .fitting import FitSet, RationalFit, fit_tasselli, vector_fit
 from .moving_hub import assemble_moving_hub, fit_hub, hub_statespace, rm_moving_hub
+from .order import lowest_order, order_scan
 from .realisation import assemble_fixed_hub, frequency_response, realize
 from .simulation import ModalSections, SimulationResult, modal_sections, response, simulate
 
@@ -28,6 +29,7 @@ __all__ = [
     "lowest_order",
     "modal_sections",
     "moving_hub",
+    "order",
     "order_scan",
     "realisation",
     "realize",

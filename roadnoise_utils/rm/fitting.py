@@ -297,7 +297,13 @@ def _weights(freqs: np.ndarray, frf: np.ndarray, weight: np.ndarray | str) -> np
             return np.ones(frf.shape)
         mag = np.abs(frf)
         return 1.0 / np.maximum(mag, 1e-12 * mag.max(axis=-1, keepdims=True))
-    w = np.broadcast_to(np.asarray(weight, float), frf.shape)
+    try:
+        w = np.broadcast_to(np.asarray(weight, float), frf.shape)
+    except ValueError:
+        raise ValueError(
+            f"weight of shape {np.shape(weight)}: give one weight per frequency ({frf.shape[-1]}) or per FRF value "
+            f"{frf.shape}"
+        ) from None
     if np.any(w < 0) or not np.all(np.isfinite(w)):
         raise ValueError("weight must be finite, >= 0 and one per frequency")
     return w
@@ -400,9 +406,20 @@ def vector_fit(
     enforce_dc : bool
         Impose ``G(0) = frf(0)`` exactly when ``freqs[0] == 0`` (the static influence).
     """
-    freqs = np.asarray(freqs, float)
-    frf = np.asarray(frf, complex)
+    freqs, frf = _as_arrays(freqs, frf)
+    if frf.ndim != 1:
+        raise ValueError(f"frf must be 1-D (one FRF; fit_tasselli fits one per row), got shape {frf.shape}")
     return _fit_many(freqs, frf[None, :], n_poles, weight, iterations, tolerance, enforce_dc)[0]
+
+
+def _as_arrays(freqs, frf) -> tuple[np.ndarray, np.ndarray]:
+    """Frequencies (float) and FRFs (complex) as arrays, or a ValueError naming the one that is not numeric."""
+    for name, value, dtype in (("freqs", freqs, float), ("frf", frf, complex)):
+        try:
+            np.asarray(value, dtype)
+        except (TypeError, ValueError):
+            raise ValueError(f"{name} must be numbers ({'real' if dtype is float else 'complex'})") from None
+    return np.asarray(freqs, float), np.asarray(frf, complex)
 
 
 def fit_tasselli(
@@ -432,8 +449,10 @@ def fit_tasselli(
     weight, iterations, tolerance, enforce_dc
         As in :func:`vector_fit`.
     """
-    freqs = np.asarray(freqs, float)
-    H = np.atleast_2d(np.asarray(H, complex))
+    freqs, H = _as_arrays(freqs, H)
+    H = np.atleast_2d(H)
+    if H.ndim != 2:
+        raise ValueError(f"H must be 1-D or 2-D [fit, frequency], got shape {H.shape}")
     if freqs.ndim != 1 or H.shape[-1] != freqs.size:
         raise ValueError(f"H must have the frequencies on its last axis ({freqs.size}), got shape {H.shape}")
     if not np.all(np.isfinite(freqs)):
@@ -444,6 +463,8 @@ def fit_tasselli(
     band = freqs <= f_max if f_max is not None else np.ones(freqs.size, bool)
     if not band.any():
         raise ValueError(f"no frequency below f_max = {f_max} Hz")
+    if not isinstance(weight, str) and np.shape(weight)[-1:] != (freqs.size,):
+        raise ValueError(f"weight of shape {np.shape(weight)}: give one weight per frequency ({freqs.size})")
     w = weight if isinstance(weight, str) else np.asarray(weight, float)[..., band]
     start = time.perf_counter()
     fits = _fit_many(freqs[band], H[:, band], n_poles, w, iterations, tolerance, enforce_dc)
@@ -453,33 +474,3 @@ def fit_tasselli(
         band=(float(freqs[band][0]), float(freqs[band][-1])),
         seconds=time.perf_counter() - start,
     )
-
-
-def order_scan(
-    freqs: np.ndarray, H: np.ndarray, orders: range | list[int] = range(8, 19), f_max: float | None = 250.0, **options
-) -> pd.DataFrame:
-    """Largest and median relative RMS error of :func:`fit_tasselli` for each model order."""
-    rows = []
-    for n in orders:
-        fits = fit_tasselli(freqs, H, n_poles=n, f_max=f_max, **options)
-        e = fits.rms_errors
-        rows.append(
-            {"poles": n, "max rms error": e.max(), "median rms error": float(np.median(e)), "time (s)": fits.seconds}
-        )
-    return pd.DataFrame(rows).set_index("poles")
-
-
-def lowest_order(
-    freqs: np.ndarray,
-    H: np.ndarray,
-    tolerance: float = 0.01,
-    orders: range | list[int] = range(8, 25),
-    f_max: float | None = 250.0,
-    **options,
-) -> FitSet:
-    """The fits at the lowest order whose every fit has relative RMS error below ``tolerance``."""
-    for n in orders:
-        fits = fit_tasselli(freqs, H, n_poles=n, f_max=f_max, **options)
-        if fits.rms_errors.max() < tolerance:
-            return fits
-    raise ValueError(f"no order in {list(orders)} fits every FRF within {tolerance:.1%}")

@@ -17,7 +17,8 @@ import control
 import numpy as np
 import scipy.linalg as sla
 
-from .fitting import FitSet, fit_tasselli, lowest_order
+from .fitting import FitSet, fit_tasselli
+from .order import lowest_order
 from .realisation import assemble_fixed_hub, real_blocks, realize
 
 
@@ -73,7 +74,7 @@ def fit_hub(
     """Rational fit of the hub FRF :math:`G_H` (paper Eq. 6), like a tassello's (Eq. 1).
 
     ``n_poles=None`` takes the lowest order whose relative RMS error over 0-``f_max`` Hz is
-    below ``tolerance`` (:func:`.fitting.lowest_order`); the paper uses 8.
+    below ``tolerance`` (:func:`.order.lowest_order`); the paper uses 8.
     """
     if n_poles is None:
         return lowest_order(freqs, G_H, tolerance=tolerance, f_max=f_max)

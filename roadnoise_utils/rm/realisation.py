@@ -73,9 +73,14 @@ def assemble_fixed_hub(fits: FitSet | list[RationalFit]) -> control.StateSpace:
         vertical force on the hub (N), positive upward. States: 2 per conjugate pole pair,
         1 per real pole, tassello after tassello (``x_F = [x_1; x_2; ...]``).
     """
+    if not isinstance(fits, (FitSet, list, tuple)):
+        raise TypeError(f"fits must be a FitSet or a list of RationalFit, got {type(fits).__name__}")
     fits = list(fits)
     if not fits:
         raise ValueError("no fits to assemble")
+    wrong = [type(f).__name__ for f in fits if not isinstance(f, RationalFit)]
+    if wrong:
+        raise TypeError(f"fits must hold RationalFit objects (ru.fit_tasselli), got {sorted(set(wrong))}")
     blocks = [real_blocks(f) for f in fits]
     a = sla.block_diag(*[blk[0] for blk in blocks])
     b = sla.block_diag(*[blk[1][:, None] for blk in blocks])

@@ -27,6 +27,7 @@ import scipy.sparse as sp
 from scipy.signal import lfilter
 from scipy.sparse.csgraph import connected_components
 
+from .. import guards
 from ..road.input import RoadInput
 
 #: Threads that run the IIR sections (scipy's lfilter releases the GIL).
@@ -89,6 +90,12 @@ def modal_sections(system: control.StateSpace, tol: float = 1e-12) -> ModalSecti
                     sections.append(Section(complex(p.real), complex(gain.real), int(source)))
                 else:
                     sections.append(Section(complex(p), complex(gain), int(source)))
+    unstable = [s.pole for s in sections if s.pole.real > 0]
+    if unstable:
+        guards.warn(
+            f"the model has {len(unstable)} unstable pole(s) (largest real part {max(p.real for p in unstable):.3g} 1/s): "
+            "its response grows without bound; a tire model should be stable"
+        )
     return ModalSections(sections=sections, direct=d[0].copy(), n_inputs=b.shape[1], n_states=n)
 
 

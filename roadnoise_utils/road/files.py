@@ -18,8 +18,10 @@ def load_road_file(path: str | Path) -> RoadProfile:
     are comments. Each belt strip uses the track nearest to its centre line.
     """
     path = Path(path)
+    if not path.is_file():
+        raise FileNotFoundError(f"road file {str(path)!r} does not exist or is not a file")
     try:
-        with open(path) as fh:
+        with open(path, encoding="utf-8-sig") as fh:  # tolerates the byte-order mark spreadsheets write
             lines = [line for line in fh if line.strip() and not line.startswith("#")]
     except UnicodeDecodeError:
         raise ValueError(f"{path.name}: not a text file; a road file is CSV text (header s,z or s,z@<y>,...)") from None
@@ -57,5 +59,7 @@ def load_road_file(path: str | Path) -> RoadProfile:
             "(heights are in metres, not millimetres)"
         )
     check_lateral_positions(y)
+    if np.unique(y).size != y.size:
+        raise ValueError(f"{path.name}: two height columns at one lateral position: {header[1:]}")
     order = np.argsort(y)
     return RoadProfile(s=s, y=y[order], z=z[order], spectrum=None, seed=None, periodic=False)

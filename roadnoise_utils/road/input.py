@@ -32,7 +32,7 @@ import numpy as np
 from .. import guards
 from ..tire.static import StaticState
 from .kernels import strip_kernels
-from .textures import MAX_HEIGHT, RoadSpectrum, generate_field, generate_profile
+from .textures import MAX_HEIGHT, RoadSpectrum, as_spectrum, generate_field, generate_profile
 
 #: Simulation band of the RM model (Hz), paper abstract: "0-250 Hz".
 BAND = 250.0
@@ -42,6 +42,8 @@ SAMPLES_PER_PERIOD = 20
 #: so each tassello input varies smoothly between samples (the road itself is averaged on a grid
 #: ``oversample`` times finer).
 MAX_ROAD_STEP = 3.5e-3
+#: Fastest rolling speed accepted (m/s, 360 km/h): more is a unit slip (km/h times 3.6).
+MAX_SPEED = 100.0
 #: Road grid of slow runs (m): finer steps are interpolated linearly from this grid.
 ROAD_GRID = 1.0e-4
 
@@ -114,7 +116,7 @@ def sample_rate_for(speed: float, band: float = BAND) -> float:
 
 def check_sampling(speed: float, sample_rate: float, band: float = BAND) -> None:
     """Refuse speeds and sample rates that cannot represent the band, naming the valid range."""
-    speed = guards.real("speed", speed, 0.0, lo_open=True, unit="m/s")
+    speed = guards.real("speed", speed, 0.0, MAX_SPEED, lo_open=True, unit="m/s (km/h / 3.6)")
     sample_rate = guards.real("sample_rate", sample_rate, 0.0, lo_open=True, unit="Hz")
     needed = SAMPLES_PER_PERIOD * band
     if sample_rate < needed:
@@ -168,7 +170,9 @@ def profile_input(
         (or than :data:`ROAD_GRID` when a time step covers less road; the result is then
         interpolated linearly to the time samples).
     """
-    speed = guards.real("speed", speed, 0.0, lo_open=True, unit="m/s")
+    if not isinstance(static, StaticState):
+        raise TypeError(f"static must be a StaticState (ru.solve_static(fet)), got {type(static).__name__}")
+    speed = guards.real("speed", speed, 0.0, MAX_SPEED, lo_open=True, unit="m/s (km/h / 3.6)")
     fs = sample_rate_for(speed) if sample_rate is None else sample_rate
     check_sampling(speed, fs)
     fs = float(fs)
@@ -230,7 +234,10 @@ def _check_input_memory(tasselli, n: int, n_grid: int, step: float, oversample: 
 
 
 def _heights(profile, s: np.ndarray) -> np.ndarray:
-    z = np.asarray(profile(s), dtype=float)
+    z = np.asarray(profile(s))
+    if np.iscomplexobj(z):
+        raise ValueError("the road profile returned complex heights: heights are real numbers (m)")
+    z = z.astype(float)
     if z.shape != s.shape or not np.all(np.isfinite(z)):
         raise ValueError("the road profile must return finite heights, one per road coordinate")
     if np.max(np.abs(z)) > MAX_HEIGHT:
@@ -306,8 +313,13 @@ def texture_input(
     step : float
         Road grid of the generated profile (m), at most a fifth of the shortest wavelength.
     """
+    if not isinstance(static, StaticState):
+        raise TypeError(f"static must be a StaticState (ru.solve_static(fet)), got {type(static).__name__}")
+    spectrum = as_spectrum(spectrum)
+    if not isinstance(lateral, (bool, np.bool_)):
+        raise ValueError(f"lateral = {lateral!r} must be True (a 3D road) or False (uniform across the width)")
     duration = guards.real("duration", duration, 0.0, lo_open=True, unit="s")
-    speed = guards.real("speed", speed, 0.0, lo_open=True, unit="m/s")
+    speed = guards.real("speed", speed, 0.0, MAX_SPEED, lo_open=True, unit="m/s (km/h / 3.6)")
     seed = guards.seed(seed)
     fs = sample_rate_for(speed) if sample_rate is None else sample_rate
     check_sampling(speed, fs)

@@ -121,6 +121,9 @@ def load_texture(name: str | Path) -> RoadSpectrum:
     path = data_file(name, "roads", "road texture")
     data = read_toml(path)
     spectrum = data.get("spectrum", {})
+    if not isinstance(spectrum, dict):
+        raise ValueError(f"{path.name}: [spectrum] must be a table (iso_class or reference_psd, exponent, ...)")
+    spectrum = dict(spectrum)
     iso_class = spectrum.pop("iso_class", None)
     if iso_class is not None:
         if iso_class not in ISO8608_CLASSES:
@@ -133,6 +136,15 @@ def load_texture(name: str | Path) -> RoadSpectrum:
             f"{path.name}: [spectrum] needs reference_psd (or iso_class), exponent, "
             f"texture_wavenumber, texture_exponent, min_wavelength, max_wavelength ({exc})"
         ) from exc
+
+
+def as_spectrum(spectrum: RoadSpectrum | str | Path) -> RoadSpectrum:
+    """A :class:`RoadSpectrum`, or one loaded from a texture name or path (:func:`load_texture`)."""
+    if isinstance(spectrum, (str, Path)):
+        return load_texture(spectrum)
+    if not isinstance(spectrum, RoadSpectrum):
+        raise TypeError(f"spectrum must be a RoadSpectrum or a texture name, got {type(spectrum).__name__}")
+    return spectrum
 
 
 def _grid(length: float, step: float, n_tracks: int = 1) -> tuple[int, np.ndarray]:
@@ -229,6 +241,7 @@ def generate_profile(spectrum: RoadSpectrum, length: float, step: float, seed: i
         Seed of ``numpy.random.default_rng``: the same seed gives the same road.
     """
     seed = guards.seed(seed)
+    spectrum = as_spectrum(spectrum)
     n, freqs = _grid(length, step)
     _check_length(spectrum, length)
     rng = np.random.default_rng(seed)
@@ -254,10 +267,13 @@ def generate_field(spectrum: RoadSpectrum, length: float, step: float, y: np.nda
     much longer than ``b`` and independent for much shorter ones.
     """
     seed = guards.seed(seed)
+    spectrum = as_spectrum(spectrum)
     y = np.atleast_1d(np.asarray(y, dtype=float))
     if y.ndim != 1 or y.size == 0 or not np.all(np.isfinite(y)):
         raise ValueError(f"y = {y!r}: give one or more finite lateral positions (m)")
     check_lateral_positions(y)
+    if np.unique(y).size != y.size:
+        raise ValueError(f"y = {y.tolist()}: lateral positions must differ (two tracks at one position)")
     n, freqs = _grid(length, step, y.size)
     _check_length(spectrum, length)
     rng = np.random.default_rng(seed)

@@ -199,6 +199,9 @@ class TireSpec:
         """
         data = to_dict(self)
         for key, value in changes.items():
+            if key == "name":
+                data["tire"]["name"] = value
+                continue
             node = data
             *parents, leaf = key.split(".")
             for part in parents:

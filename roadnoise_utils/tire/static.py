@@ -28,9 +28,11 @@ import scipy.sparse.linalg as spla
 
 from .. import guards
 from .ring_model import UZ, FETModel
-from .spec import Operating
+from .spec import Operating, TireSpec, to_dict
 from .tasselli import Tasselli, tassellate
 
+#: Largest drum radius (m): test drums are 0.8-3 m; a radius in millimetres would pass unnoticed.
+MAX_DRUM_RADIUS = 20.0
 #: Nodes within this angle of the bottom of the tire are contact candidates (rad).
 CANDIDATE_ANGLE = np.deg2rad(45.0)
 
@@ -49,8 +51,9 @@ class RoadSurface:
     def __post_init__(self) -> None:
         if self.kind not in ("flat", "drum"):
             raise ValueError(f"road = {self.kind!r}: valid values are 'flat' and 'drum'")
-        if self.kind == "drum" and not (np.isfinite(self.drum_radius) and self.drum_radius > 0.3):
-            raise ValueError(f"drum_radius = {self.drum_radius} m: valid range is (0.3, inf) m")
+        if self.kind == "drum":
+            # test drums are 0.8-3 m; 20 m is already nearly flat for a 0.1 m footprint: more is a unit slip
+            guards.real("drum_radius", self.drum_radius, 0.3, MAX_DRUM_RADIUS, lo_open=True, unit="m")
 
     def drop(self, x: np.ndarray) -> np.ndarray:
         """How far the surface lies below its top at ``x`` (m)."""
@@ -88,6 +91,8 @@ class StaticState:
         The footprint divided into blocks.
     iterations : int
         Active-set iterations used.
+    tire : TireSpec
+        The tire it was solved for (:func:`check_same_tire` refuses another tire's FE model).
     """
 
     road: RoadSurface
@@ -102,6 +107,7 @@ class StaticState:
     tasselli: Tasselli
     iterations: int
     road_height: np.ndarray = field(repr=False)
+    tire: TireSpec | None = field(default=None, repr=False)
 
     @property
     def footprint_length(self) -> float:
@@ -302,6 +308,11 @@ def solve_static(
         Contact set, contact forces and pressures, deflection, tangent vertical stiffness,
         displacement field and tasselli.
     """
+    if not isinstance(fet, FETModel):
+        raise TypeError(
+            f"fet must be an FETModel (ru.build_fet(tire)), got {type(fet).__name__}; "
+            "ru.stages.solve_static takes a tire name"
+        )
     surface = make_road(road, drum_radius)
     load = fet.spec.operating.vertical_load if load is None else check_load(load)
     check_mesh_resolution(fet)
@@ -351,8 +362,10 @@ def make_road(road: str, drum_radius: float | None = None) -> RoadSurface:
     if road == "flat":
         return RoadSurface("flat")
     if drum_radius is None:
-        raise ValueError("drum_radius is required for road='drum': give the drum radius in m, valid range (0.3, inf)")
-    return RoadSurface("drum", float(drum_radius))
+        raise ValueError(
+            f"drum_radius is required for road='drum': give the drum radius in m, valid range (0.3, {MAX_DRUM_RADIUS:g}]"
+        )
+    return RoadSurface("drum", guards.real("drum_radius", drum_radius, 0.3, MAX_DRUM_RADIUS, lo_open=True, unit="m"))
 
 
 def _state_from_solution(
@@ -386,7 +399,44 @@ def _state_from_solution(
         tasselli=_tasselli_of(fet, contact),
         iterations=iterations,
         road_height=road_height,
+        tire=fet.spec,
     )
+
+
+def check_same_tire(fet: FETModel, static: StaticState) -> None:
+    """Refuse an FE model and a static state of different tires (their pairing would be silently wrong).
+
+    Raises
+    ------
+    TypeError
+        ``fet`` is not an :class:`FETModel` or ``static`` not a :class:`StaticState`.
+    ValueError
+        ``static`` was solved for a tire whose parameters differ from ``fet``'s; names them.
+    """
+    if not isinstance(fet, FETModel):
+        raise TypeError(f"fet must be an FETModel (ru.build_fet(tire)), got {type(fet).__name__}")
+    if not isinstance(static, StaticState):
+        raise TypeError(f"static must be a StaticState (ru.solve_static(fet)), got {type(static).__name__}")
+    if static.tire is None:
+        return
+    a, b = _flat(to_dict(static.tire)), _flat(to_dict(fet.spec))
+    differ = sorted(k for k in a.keys() | b.keys() if a.get(k) != b.get(k))
+    if differ:
+        shown = ", ".join(f"{k} ({a.get(k)!r} vs {b.get(k)!r})" for k in differ[:3])
+        raise ValueError(
+            f"static was solved for another tire than fet: {shown}{' ...' if len(differ) > 3 else ''}; "
+            "solve the static state of this FE model (ru.solve_static(fet, ...))"
+        )
+
+
+def _flat(data: dict, prefix: str = "") -> dict:
+    out = {}
+    for key, value in data.items():
+        if isinstance(value, dict):
+            out.update(_flat(value, f"{prefix}{key}."))
+        else:
+            out[f"{prefix}{key}"] = value
+    return out
 
 
 def _check_no_hidden_penetration(problem: ContactProblem, u: np.ndarray, delta: float) -> None:

@@ -25,6 +25,7 @@ from typing import NamedTuple
 import control
 import numpy as np
 
+from .. import guards
 from ..repro.paths import data_file, read_toml
 
 _KINDS = {"spring": ("stiffness",), "damper": ("damping",), "maxwell": ("stiffness", "damping")}
@@ -72,12 +73,14 @@ class QuarterCar:
     def names(self) -> list[str]:
         return list(self.masses)
 
+    def __post_init__(self) -> None:
+        _validate(self, "QuarterCar")
+
 
 def _validate(vehicle: QuarterCar, source: str) -> None:
     for name, m in vehicle.masses.items():
         lo, hi, unit = _RANGES["mass"]
-        if not (np.isfinite(m) and lo <= m <= hi):
-            raise ValueError(f"{source}: mass {name!r} = {m} {unit}: valid range is [{lo:g}, {hi:g}] {unit}")
+        guards.real(f"{source}: mass {name!r}", m, lo, hi, unit=unit)
     known = set(vehicle.masses) | {"ground"}
     for e in vehicle.elements:
         if e.kind not in _KINDS:
@@ -87,8 +90,8 @@ def _validate(vehicle: QuarterCar, source: str) -> None:
                 raise ValueError(f"{source}: element {e.kind} refers to {end!r}; known masses are {sorted(known)}")
         for field in _KINDS[e.kind]:
             lo, hi, unit = _RANGES[field]
-            value = getattr(e, field)
-            if not (np.isfinite(value) and lo <= value <= hi) or (e.kind == "maxwell" and value <= 0):
+            value = guards.real(f"{source}: {e.kind} {e.a}-{e.b} {field}", getattr(e, field), lo, hi, unit=unit)
+            if e.kind == "maxwell" and value <= 0:
                 raise ValueError(
                     f"{source}: {e.kind} {e.a}-{e.b} {field} = {value} {unit}: valid range is [{lo:g}, {hi:g}] {unit}"
                 )
@@ -101,26 +104,48 @@ def load_vehicle(name: str | Path) -> QuarterCar:
     """A vehicle corner from ``data/vehicles/<name>.toml`` (or a path), validated."""
     path = data_file(name, "vehicles", "vehicle")
     data = read_toml(path)
-    elements = tuple(
-        Element(
-            kind=e["kind"],
-            a=e["between"][0],
-            b=e["between"][1],
-            stiffness=float(e.get("stiffness", 0.0)),
-            damping=float(e.get("damping", 0.0)),
+    source = path.name
+    _check_keys(data, _TOP_KEYS, _TOP_KEYS, source, "the file")
+    if not isinstance(data["masses"], dict) or not isinstance(data["element"], list):
+        raise ValueError(f"{source}: [masses] must be a table and [[element]] a list of tables")
+    elements = tuple(_element(e, k, source) for k, e in enumerate(data["element"]))
+    try:
+        return QuarterCar(
+            name=str(data["name"]),
+            tire=str(data["tire"]),
+            masses=dict(data["masses"]),
+            elements=elements,
+            hub=str(data["hub"]),
+            upper_mount=str(data["upper_mount"]),
         )
-        for e in data["element"]
-    )
-    vehicle = QuarterCar(
-        name=data["name"],
-        tire=data["tire"],
-        masses={k: float(v) for k, v in data["masses"].items()},
-        elements=elements,
-        hub=data["hub"],
-        upper_mount=data["upper_mount"],
-    )
-    _validate(vehicle, path.name)
-    return vehicle
+    except ValueError as exc:
+        raise ValueError(str(exc).replace("QuarterCar", source, 1)) from None
+
+
+_TOP_KEYS = {"name", "tire", "hub", "upper_mount", "masses", "element"}
+
+
+def _check_keys(table: dict, required: set[str], allowed: set[str], source: str, where: str) -> None:
+    missing = sorted(required - set(table))
+    unknown = sorted(set(table) - allowed)
+    if missing:
+        raise ValueError(f"{source}: {where} is missing {missing}")
+    if unknown:
+        raise ValueError(f"{source}: {where} has unknown key(s) {unknown}; expected {sorted(allowed)}")
+
+
+def _element(table: object, k: int, source: str) -> Element:
+    """One ``[[element]]`` table, its keys checked for its kind (a misspelt value is an error, not a zero)."""
+    where = f"[[element]] {k + 1}"
+    if not isinstance(table, dict) or table.get("kind") not in _KINDS:
+        kind = table.get("kind") if isinstance(table, dict) else table
+        raise ValueError(f"{source}: {where} kind = {kind!r}: valid kinds are {sorted(_KINDS)}")
+    values = set(_KINDS[table["kind"]])
+    _check_keys(table, {"kind", "between"} | values, {"kind", "between"} | values, source, where)
+    between = table["between"]
+    if not (isinstance(between, list) and len(between) == 2 and all(isinstance(b, str) for b in between)):
+        raise ValueError(f'{source}: {where} between = {between!r}: give two mass names, e.g. ["unsprung", "body"]')
+    return Element(table["kind"], between[0], between[1], table.get("stiffness", 0.0), table.get("damping", 0.0))
 
 
 def with_extra_hub_mass(vehicle: QuarterCar, mass: float) -> QuarterCar:

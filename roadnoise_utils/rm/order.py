@@ -1,0 +1,39 @@
+"""Model order of the rational fits: the error against the number of poles, and the lowest order
+that fits every FRF within a tolerance (notebook 03: the paper's 8 poles against our tire's needs)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from .fitting import FitSet, fit_tasselli
+
+
+def order_scan(
+    freqs: np.ndarray, H: np.ndarray, orders: range | list[int] = range(8, 19), f_max: float | None = 250.0, **options
+) -> pd.DataFrame:
+    """Largest and median relative RMS error of :func:`fit_tasselli` for each model order."""
+    rows = []
+    for n in orders:
+        fits = fit_tasselli(freqs, H, n_poles=n, f_max=f_max, **options)
+        e = fits.rms_errors
+        rows.append(
+            {"poles": n, "max rms error": e.max(), "median rms error": float(np.median(e)), "time (s)": fits.seconds}
+        )
+    return pd.DataFrame(rows).set_index("poles")
+
+
+def lowest_order(
+    freqs: np.ndarray,
+    H: np.ndarray,
+    tolerance: float = 0.01,
+    orders: range | list[int] = range(8, 25),
+    f_max: float | None = 250.0,
+    **options,
+) -> FitSet:
+    """The fits at the lowest order whose every fit has relative RMS error below ``tolerance``."""
+    for n in orders:
+        fits = fit_tasselli(freqs, H, n_poles=n, f_max=f_max, **options)
+        if fits.rms_errors.max() < tolerance:
+            return fits
+    raise ValueError(f"no order in {list(orders)} fits every FRF within {tolerance:.1%}")
