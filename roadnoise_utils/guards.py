@@ -94,6 +94,14 @@ def integer(name: str, value: object, lo: int = 0, hi: float = math.inf) -> int:
     return int(value)
 
 
+def interval(name: str, value: object, unit: str = "m") -> tuple[float, float]:
+    """A pair ``(start, end)`` of finite numbers, the end beyond the start (a travel range, say)."""
+    if isinstance(value, (str, bytes)) or not hasattr(value, "__len__") or len(value) != 2:
+        raise ValueError(f"{name} = {value!r} must be a pair (start, end) in {unit}")
+    start = real(f"{name}[0]", value[0], unit=unit)
+    return start, real(f"{name}[1]", value[1], start, lo_open=True, unit=f"{unit} (after the start)")
+
+
 def seed(value: object) -> int:
     """A random-road seed: a non-negative integer (the same seed gives the same road)."""
     return integer("seed", value, 0)

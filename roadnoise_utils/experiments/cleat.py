@@ -121,19 +121,11 @@ def cleat_conditions(
         quasi_static_kmh=guards.real(
             "quasi_static_kmh", speeds["quasi_static_kmh"], 0.0, MAX_SPEED_KMH, lo_open=True, unit="km/h"
         ),
-        quasi_static_distance=_pair("quasi_static_distance", runs["quasi_static_distance"]),
-        dynamic_distance=_pair("dynamic_distance", runs["dynamic_distance"]),
-        fe_distance=_pair("fe_distance", runs["fe_distance"]),
+        quasi_static_distance=guards.interval("quasi_static_distance", runs["quasi_static_distance"]),
+        dynamic_distance=guards.interval("dynamic_distance", runs["dynamic_distance"]),
+        fe_distance=guards.interval("fe_distance", runs["fe_distance"]),
         fe_duration=guards.real("fe_duration", runs["fe_duration"], 0.0, 60.0, lo_open=True, unit="s"),
     )
-
-
-def _pair(name: str, value: object) -> tuple[float, float]:
-    """A travel range (start, end) in m, the end beyond the start."""
-    if not (isinstance(value, (list, tuple)) and len(value) == 2):
-        raise ValueError(f"{name} = {value!r} must be a pair (start, end) in m")
-    start = guards.real(f"{name}[0]", value[0], unit="m")
-    return start, guards.real(f"{name}[1]", value[1], start, lo_open=True, unit="m (after the start)")
 
 
 @dataclass(frozen=True, eq=False)

@@ -31,7 +31,7 @@ from ..response import modal_reduction as modal
 from ..response.frf import FRFResult
 from ..response.modal_reduction import ModalReduction
 from ..response.modes import LoadedModes
-from ..rm import fitting, moving_hub, order, realisation
+from ..rm import moving_hub, order, realisation
 from ..rm.fitting import FitSet
 from ..road.input import BAND, RoadInput
 from ..tire import ring_model, spec, static
@@ -175,13 +175,9 @@ def fit_tasselli(
     visco = frf_visco(tire, road, load=load, drum_radius=drum_radius)
 
     def compute() -> FitSet:
-        if n_poles is None:
-            return order.lowest_order(visco.freqs, visco.H, tolerance=FIT_TOLERANCE, f_max=f_max)
-        return fitting.fit_tasselli(visco.freqs, visco.H, n_poles=n_poles, f_max=f_max)
+        return order.fit_at_order(visco.freqs, visco.H, n_poles, f_max, FIT_TOLERANCE)
 
-    return cached(
-        fit_tasselli, {**inputs, **options}, compute, runs=(fitting.fit_tasselli, order.lowest_order, frf.frf_visco)
-    )
+    return cached(fit_tasselli, {**inputs, **options}, compute, runs=(order.fit_at_order, frf.frf_visco))
 
 
 def fit_hub(

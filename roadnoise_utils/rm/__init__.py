@@ -9,7 +9,7 @@ into the block-diagonal fixed-hub tire (Eq. 2-4) -> ``moving_hub`` adds :math:`G
 from . import fitting, fitting_peer, moving_hub, order, realisation, simulation
 from .fitting import FitSet, RationalFit, fit_tasselli, vector_fit
 from .moving_hub import assemble_moving_hub, fit_hub, hub_statespace, rm_moving_hub
-from .order import lowest_order, order_scan
+from .order import fit_at_order, lowest_order, order_scan
 from .realisation import assemble_fixed_hub, frequency_response, realize
 from .simulation import ModalSections, SimulationResult, modal_sections, response, simulate
 
@@ -20,6 +20,7 @@ __all__ = [
     "SimulationResult",
     "assemble_fixed_hub",
     "assemble_moving_hub",
+    "fit_at_order",
     "fit_hub",
     "fit_tasselli",
     "fitting",

@@ -17,8 +17,8 @@ import control
 import numpy as np
 import scipy.linalg as sla
 
-from .fitting import FitSet, fit_tasselli
-from .order import lowest_order
+from .fitting import FitSet
+from .order import fit_at_order
 from .realisation import assemble_fixed_hub, real_blocks, realize
 
 
@@ -76,6 +76,4 @@ def fit_hub(
     ``n_poles=None`` takes the lowest order whose relative RMS error over 0-``f_max`` Hz is
     below ``tolerance`` (:func:`.order.lowest_order`); the paper uses 8.
     """
-    if n_poles is None:
-        return lowest_order(freqs, G_H, tolerance=tolerance, f_max=f_max)
-    return fit_tasselli(freqs, G_H, n_poles=n_poles, f_max=f_max)
+    return fit_at_order(freqs, G_H, n_poles, f_max, tolerance)

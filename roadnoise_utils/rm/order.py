@@ -37,3 +37,12 @@ def lowest_order(
         if fits.rms_errors.max() < tolerance:
             return fits
     raise ValueError(f"no order in {list(orders)} fits every FRF within {tolerance:.1%}")
+
+
+def fit_at_order(
+    freqs: np.ndarray, H: np.ndarray, n_poles: int | None = None, f_max: float = 250.0, tolerance: float = 0.01
+) -> FitSet:
+    """Fits with ``n_poles`` poles each, or, with ``n_poles=None``, at the :func:`lowest_order` within ``tolerance``."""
+    if n_poles is None:
+        return lowest_order(freqs, H, tolerance=tolerance, f_max=f_max)
+    return fit_tasselli(freqs, H, n_poles=n_poles, f_max=f_max)

@@ -176,7 +176,7 @@ def profile_input(
     fs = sample_rate_for(speed) if sample_rate is None else sample_rate
     check_sampling(speed, fs)
     fs = float(fs)
-    d0, d1 = _travel(distance)
+    d0, d1 = guards.interval("distance", distance)
     oversample = guards.integer("oversample", oversample, 1, 64)
     if not callable(profile):
         raise ValueError(
@@ -209,17 +209,6 @@ def profile_input(
         frac = position - left
         u = on_grid[:, left] * (1 - frac) + on_grid[:, left + 1] * frac
     return RoadInput(t=t, distance=distance_samples, u=u, speed=float(speed), description=description)
-
-
-def _travel(distance) -> tuple[float, float]:
-    """The travel range (m) as two finite numbers, the end beyond the start."""
-    try:
-        d0, d1 = distance
-    except (TypeError, ValueError):
-        raise ValueError(f"distance = {distance!r} must be a pair (start, end) in m") from None
-    d0 = guards.real("distance[0]", d0, unit="m")
-    d1 = guards.real("distance[1]", d1, d0, lo_open=True, unit="m (after the start)")
-    return d0, d1
 
 
 def _check_input_memory(tasselli, n: int, n_grid: int, step: float, oversample: int) -> None:

@@ -1,13 +1,10 @@
-"""The reproduction command, its report, the README's promises and the notebooks' parameters."""
+"""The claims report: tests of each claim, verdicts, exit status, an evaluator for every claim."""
 
 from __future__ import annotations
 
 import pytest
 
 from roadnoise_utils.repro import claims, collection, reproduce
-from roadnoise_utils.repro.paths import REPO_ROOT
-
-README = (REPO_ROOT / "README.md").read_text()
 
 SMALL = [
     {"id": "a", "claim": "a number", "where": "Fig. 1", "paper": 10.0, "rel": 0.1, "notebook": "x.ipynb"},

@@ -16,20 +16,6 @@ from roadnoise_utils.repro.paths import REPO_ROOT
 
 README = (REPO_ROOT / "README.md").read_text()
 
-SMALL = [
-    {"id": "a", "claim": "a number", "where": "Fig. 1", "paper": 10.0, "rel": 0.1, "notebook": "x.ipynb"},
-    {"id": "b", "claim": "a bound", "where": "Eq. 2", "paper": "small", "max": 1.0, "notebook": "y.ipynb"},
-    {
-        "id": "c",
-        "claim": "a deviation",
-        "where": "Fig. 3",
-        "paper": 5.0,
-        "rel": 0.1,
-        "notebook": "y.ipynb",
-        "known_deviation": "explained",
-    },
-]
-
 
 @pytest.mark.parametrize("notebook", sorted(p.name for p in (REPO_ROOT / "notebooks").glob("*.ipynb")))
 def test_every_notebook_has_a_parameters_cell(notebook):
