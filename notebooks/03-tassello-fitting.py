@@ -86,10 +86,10 @@ plt.show()
 
 # %% [markdown]
 # **Eight poles are not enough for our tire.** Its local FRFs have *five* vertical resonances
-# in 0-250 Hz (80, 109, 150, 198 and 250 Hz, notebook 02), which need at least ten poles; with
+# in 0-250 Hz (80, 108, 148, 195 and 247 Hz, notebook 02), which need at least ten poles; with
 # eight, one resonance is missing and the error is ~40 %. The paper's tire presumably had four
 # (its Fig. 14 shows "the first four vertical modes" below 220 Hz). We use the lowest order at
-# which *every* tassello is fitted within 1 %: 14 poles and 14 zeros.
+# which *every* tassello is fitted within 1 % (the table above; printed below).
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -211,7 +211,7 @@ print(f"G_H: {hub.n_poles} poles, relative RMS error {hub[0].rms_error:.4f}, G_H
 # %% [markdown]
 # ## 5. Peer check: scikit-rf's `VectorFitting` on the same FRFs
 #
-# The same model (14 poles, constant term) fitted with scikit-rf, an independent
+# The same model (the same order, constant term) fitted with scikit-rf, an independent
 # implementation of the same algorithm, on the same data:
 
 # %%
@@ -245,9 +245,9 @@ ru.claims.check(claims)
 
 # %% [markdown]
 # The one claim we do not reproduce is the order: our tire has a fifth vertical mode at the
-# top of the band, so its tasselli need 14 poles instead of 8. Everything downstream uses the
-# 14-pole model; the procedure is unchanged. The block-diagonal structure of Eq. 3-4 is as in
-# the paper, with 14 states per tassello instead of 8.
+# top of the band, so its tasselli need more poles than 8 (the order printed above). Everything
+# downstream uses that model; the procedure is unchanged. The block-diagonal structure of
+# Eq. 3-4 is as in the paper, with that many states per tassello instead of 8.
 #
 # ## Explore: the fit of any tassello at any order
 

@@ -127,6 +127,17 @@ def damped_components(y: np.ndarray, dt: float, n_components: int = 6) -> pd.Dat
     return table
 
 
+def distinct_peaks(
+    distance: np.ndarray, force: np.ndarray, window: tuple[float, float] = (-np.inf, np.inf), prominence: float = 0.1
+) -> int:
+    """How many peaks of ``force`` inside ``window`` (m) stand out by at least ``prominence`` times
+    the largest force there (scipy's peak prominence): the "distinct peaks" of a cleat passage."""
+    inside = (distance >= window[0]) & (distance <= window[1])
+    values = np.asarray(force)[inside]
+    idx, _ = find_peaks(values, prominence=prominence * values.max())
+    return int(idx.size)
+
+
 def force_peaks(
     distance: np.ndarray,
     force: np.ndarray,

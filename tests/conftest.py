@@ -32,8 +32,8 @@ def drum(fet):
 
 @pytest.fixture(scope="session")
 def coarse_tire(tire) -> ru.TireSpec:
-    """Same tire on a coarse mesh (7 strips x 240 elements, two contact points per row): properties, not calibration."""
-    return tire.replace(**{"mesh.n_strips": 7, "mesh.n_elements": 240, "tasselli.strips_per_column": 1})
+    """Same tire on a coarse mesh (7 strips x 260 elements, two contact points per row): properties, not calibration."""
+    return tire.replace(**{"mesh.n_strips": 7, "mesh.n_elements": 260, "tasselli.strips_per_column": 1})
 
 
 @pytest.fixture(scope="session")

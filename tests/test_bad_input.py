@@ -60,7 +60,7 @@ def test_loads_outside_the_tire_file_range_are_refused(coarse_fet, load):
 
 def test_a_mesh_coarser_than_the_tasselli_is_refused(tire):
     with pytest.raises(
-        ValueError, match=r"n_elements = 24 puts the contact points 74\.6 mm apart.*valid range is n_elements >= 117"
+        ValueError, match=r"n_elements = 24 puts the contact points 74\.6 mm apart.*valid range is n_elements >= 129"
     ):
         ru.solve_static(ru.build_fet(tire.replace(**{"mesh.n_elements": 24})))
 
@@ -207,7 +207,8 @@ def test_decay_components_outside_the_band_are_dropped_with_a_word():
     decay = test.dynamic.decay
     assert decay["frequency (Hz)"].max() <= 250.0
     assert decay["frequency (Hz)"].iloc[0] == pytest.approx(80.0, abs=2.0)
-    assert decay["damping ratio"].iloc[0] < 0.03  # was 0.147 from a 15 ms record
+    # the calibrated first-mode damping (0.035-0.06, data/calibration); was 0.147 from a 15 ms record
+    assert 0.035 < decay["damping ratio"].iloc[0] < 0.06
 
 
 @pytest.mark.parametrize(

@@ -4,6 +4,7 @@
 experiment                     what it runs                                     notebook
 =============================  ===============================================  ==========
 :func:`cleat_test`             drum cleat, quasi-static and dynamic, FE check   04
+:func:`one_sided_cleat_test`   the same with one-sided contact of the FE tire   08
 :func:`moving_hub_check`       RM moving hub vs the FE tire with its hub free   05
 :func:`road_test`              textures flowing through the footprint           06
 :func:`quarter_car`            the corner on the road test, spectra             07
@@ -14,11 +15,20 @@ experiment                     what it runs                                     
 paper's value); the numerics below them take explicit arguments and read no TOML.
 """
 
-from . import calibration, cleat, conditions, corner, moving_hub, paper_defaults, road
+from . import calibration, cleat, conditions, corner, moving_hub, one_sided_cleat, paper_defaults, road
 from .calibration import calibration_table
 from .cleat import CleatConditions, CleatRun, CleatTest, cleat_conditions, cleat_test
 from .corner import CornerSetup, QuarterCarTest, corner_setup, quarter_car
 from .moving_hub import MovingHubCheck, Suspension, moving_hub_check, suspension_conditions
+from .one_sided_cleat import (
+    FrozenCheck,
+    OneSidedCleatTest,
+    OneSidedConditions,
+    frozen_check,
+    one_sided_cleat_test,
+    one_sided_conditions,
+    speed_sweep,
+)
 from .road import RoadTest, RoadTestConditions, road_test, road_test_conditions
 
 __all__ = [
@@ -26,6 +36,9 @@ __all__ = [
     "CleatRun",
     "CleatTest",
     "CornerSetup",
+    "FrozenCheck",
+    "OneSidedCleatTest",
+    "OneSidedConditions",
     "MovingHubCheck",
     "QuarterCarTest",
     "RoadTest",
@@ -41,10 +54,15 @@ __all__ = [
     "corner_setup",
     "moving_hub",
     "moving_hub_check",
+    "frozen_check",
+    "one_sided_cleat",
+    "one_sided_cleat_test",
+    "one_sided_conditions",
     "paper_defaults",
     "quarter_car",
     "road",
     "road_test",
     "road_test_conditions",
+    "speed_sweep",
     "suspension_conditions",
 ]

@@ -1,7 +1,8 @@
 """Calibration of a FET against its targets (DESIGN section 2): the "target / obtained" table.
 
 Targets live in ``data/calibration/<tire>.toml`` (a range and a source for each quantity);
-the obtained values are computed from the static state and the direct FRF of the tire.
+the obtained values are computed from the static state and the direct FRF of the tire (the
+damping ratio of the first vertical mode by the modal least squares of notebook 02).
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ import pandas as pd
 from ..analysis import resonance_peaks
 from ..repro import stages
 from ..repro.paths import data_dir, read_toml
+from ..response.modal_reduction import identify_modes
 from ..tire.spec import TireSpec
 
 
@@ -33,6 +35,7 @@ def calibration_values(tire: str | TireSpec) -> dict[str, float]:
     return {
         "vertical_stiffness": static.vertical_stiffness / 1e3,
         "first_vertical_resonance": float(peaks[0]) if peaks.size else float("nan"),
+        "first_vertical_damping": float(identify_modes(frf.freqs, frf.H_tot).damping[0]),
         "footprint_length": static.footprint_length * 1e3,
         "footprint_width": static.footprint_width * 1e3,
         "n_tasselli": t.n,
@@ -68,6 +71,7 @@ def calibration_table(tire: str | TireSpec = "165_65R14") -> pd.DataFrame:
 _UNITS = {
     "vertical_stiffness": "N/mm",
     "first_vertical_resonance": "Hz",
+    "first_vertical_damping": "-",
     "footprint_length": "mm",
     "footprint_width": "mm",
     "n_tasselli": "-",

@@ -276,11 +276,11 @@ def analyse_run(
                 f"{where}: {free.sum() * dt * 1e3:.0f} ms of free decay, under {DECAY_DURATION * 1e3:.0f} ms; its damping "
                 f"ratios are unreliable (distance[1] >= {start + needed * result.road.speed * dt:.3f} m gives enough)"
             )
-        decay = _in_band(damped_components(result.force[free], dt, n_components=DECAY_COMPONENTS), band)
+        decay = in_band(damped_components(result.force[free], dt, n_components=DECAY_COMPONENTS), band)
     return CleatRun(result=result, peaks=peaks, decay=decay)
 
 
-def _in_band(components: pd.DataFrame, band: float) -> pd.DataFrame:
+def in_band(components: pd.DataFrame, band: float) -> pd.DataFrame:
     """The components at or below ``band`` Hz; a warning names dropped ones that are not negligible."""
     above = components["frequency (Hz)"] > band
     large = above & (components["amplitude"] > 0.01 * components["amplitude"].max())

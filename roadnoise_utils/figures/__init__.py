@@ -8,6 +8,7 @@ at this edge only) and draws the paper's own numbers as labelled reference lines
 from . import (
     cleat_test,
     common,
+    contact_loss,
     fe_tire_model,
     moving_hub,
     overview,
@@ -20,6 +21,7 @@ from . import (
 __all__ = [
     "cleat_test",
     "common",
+    "contact_loss",
     "fe_tire_model",
     "moving_hub",
     "overview",

@@ -18,10 +18,11 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from ..analysis import band_errors, peak_comparison, resonance_peaks
+from ..analysis import band_errors, distinct_peaks, peak_comparison, resonance_peaks
 from ..experiments.cleat import PAPER_TIRE, CleatTest, cleat_test
 from ..experiments.corner import PAPER_CAR, QuarterCarTest, quarter_car
 from ..experiments.moving_hub import CHECK_TIRE, moving_hub_check
+from ..experiments.one_sided_cleat import OneSidedCleatTest, one_sided_cleat_test
 from ..response.frf import FRFResult
 from ..rm.fitting import fit_tasselli
 from ..road.kernels import tassellation_error
@@ -99,6 +100,16 @@ def _visco(road: str = "flat") -> FRFResult:
 @functools.cache
 def _cleat() -> CleatTest:
     return cleat_test(PAPER_TIRE)
+
+
+@functools.cache
+def _contact() -> OneSidedCleatTest:
+    return one_sided_cleat_test(PAPER_TIRE)
+
+
+def _two_peaks(distance: np.ndarray, force: np.ndarray, window: tuple[float, float] = (-np.inf, np.inf)) -> int:
+    """Distinct peaks (prominence >= 10 % of the largest force) while the cleat passes."""
+    return distinct_peaks(distance, force, window)
 
 
 @functools.cache
@@ -199,11 +210,11 @@ EVALUATORS: dict[str, Callable[[], float]] = {
     "fig5_degrades": lambda: float(_paper_modal_errors()[-1] / _paper_modal_errors()[0]),
     "eight_poles": _eight_poles,
     "fig6_fit": _fig6_fit,
-    "cleat_two_peaks": lambda: float(len(_cleat().quasi_static.peaks)),
+    "cleat_two_peaks": lambda: float(
+        _two_peaks(_cleat().quasi_static.result.distance, _cleat().quasi_static.result.force)
+    ),
     "cleat_quasi_static": lambda: _cleat().quasi_static.peak_force,
     "cleat_dynamic": lambda: _cleat().dynamic.peak_force,
-    "cleat_ratio": lambda: _cleat().ratio,
-    "cleat_decay": lambda: float(_cleat().dynamic.decay["frequency (Hz)"].iloc[0]),
     "moving_hub": _moving_hub,
     "hub_poles": lambda: float(stages.fit_hub(CHECK_TIRE).n_poles),
     "resolution_5cm": _resolution,
@@ -214,6 +225,13 @@ EVALUATORS: dict[str, Callable[[], float]] = {
     "fig12_equalized": lambda: _low_share("rough", "a_mount"),
     "fig11_textures": lambda: _hub_rms("rough") / _hub_rms("smooth"),
     "fig14_modes": _fig14_modes,
+    "contact_two_peaks": lambda: float(
+        _two_peaks(_contact().dynamic.distance, _contact().dynamic.hub_force, (-0.15, 0.15))
+    ),
+    "contact_quasi_static": lambda: _contact().quasi_static.peak_force,
+    "contact_dynamic": lambda: _contact().dynamic.peak_force,
+    "contact_ratio": lambda: _contact().ratio,
+    "contact_decay": lambda: float(_contact().decay["frequency (Hz)"].iloc[0]),
 }
 
 

@@ -16,6 +16,8 @@ stage                     caches
 :func:`fit_tasselli`      :func:`roadnoise_utils.rm.fitting.fit_tasselli` on the direct H_i
 :func:`fit_hub`           :func:`roadnoise_utils.rm.moving_hub.fit_hub` on the direct G_H
 :func:`fe_cleat_response` :func:`roadnoise_utils.response.fe_reference.fe_cleat_response`
+:func:`one_sided_run`     :func:`roadnoise_utils.response.one_sided.quasi_static_run` and
+                          :func:`~roadnoise_utils.response.one_sided.dynamic_run` of a cleat
 ========================  ==================================================================
 
 :func:`load_tire`, :func:`build_fet` and :func:`assemble_fixed_hub` are fast and not cached.
@@ -26,13 +28,14 @@ from __future__ import annotations
 import control
 import numpy as np
 
-from ..response import fe_reference, frf, modes
+from ..response import fe_reference, frf, modes, one_sided
 from ..response import modal_reduction as modal
 from ..response.frf import FRFResult
 from ..response.modal_reduction import ModalReduction
 from ..response.modes import LoadedModes
 from ..rm import moving_hub, order, realisation
 from ..rm.fitting import FitSet
+from ..road.cleat import cleat_profile
 from ..road.input import BAND, RoadInput
 from ..tire import ring_model, spec, static
 from ..tire.ring_model import FETModel
@@ -245,6 +248,48 @@ def fe_cleat_response(
     return cached(fe_cleat_response, inputs, compute, runs=(fe_reference.fe_cleat_response, static.solve_static))
 
 
+def one_sided_run(
+    tire: Tire,
+    speed: float,
+    height: float,
+    base: float,
+    shape: str,
+    drum_radius: float,
+    distance: tuple[float, float],
+    frozen: bool = False,
+    step: float = 5.0e-4,
+    dt: float | None = None,
+) -> one_sided.ContactRun:
+    """Cached cleat passage with one-sided contact on the drum: quasi-static for ``speed = 0``, else dynamic.
+
+    ``speed`` in m/s, cleat and ``distance`` in m; ``frozen`` keeps the static contact set
+    bilateral (dynamic only); ``step`` is the travel between quasi-static solves (m); ``dt`` the
+    time step (s; default :data:`roadnoise_utils.response.one_sided.DT_MAX` or finer).
+    """
+    inputs = {
+        **_loaded(tire, "drum", None, drum_radius),
+        "speed": float(speed),
+        "height": float(height),
+        "base": float(base),
+        "shape": shape,
+        "distance": tuple(float(d) for d in distance),
+        "frozen": bool(frozen),
+        "step": float(step),
+        "dt": None if dt is None else float(dt),
+    }
+    state = solve_static(tire, "drum", drum_radius=drum_radius)
+
+    def compute() -> one_sided.ContactRun:
+        fet = build_fet(inputs["tire"])
+        profile = cleat_profile(height, base, shape)
+        if speed == 0:
+            return one_sided.quasi_static_run(fet, state, profile, distance, step)
+        return one_sided.dynamic_run(fet, state, profile, speed, distance, dt=dt, frozen=frozen)
+
+    runs = (one_sided.quasi_static_run, one_sided.dynamic_run, static.solve_static)
+    return cached(one_sided_run, inputs, compute, runs=runs)
+
+
 __all__ = [
     "DEFAULT_FREQS",
     "FIT_TOLERANCE",
@@ -257,5 +302,6 @@ __all__ = [
     "load_tire",
     "loaded_modes",
     "modal_reduction",
+    "one_sided_run",
     "solve_static",
 ]

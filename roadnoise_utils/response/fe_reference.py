@@ -55,15 +55,51 @@ def fe_road_response(
     transformed, multiplied by the direct :math:`H_i(\\omega)` at every FFT bin up to the end of
     the :func:`band_window` taper, summed and transformed back.
     """
-    dt = road.dt
-    n = record_length(road, duration)
+    return _frequency_response(fet, static, road.u, road.dt, "H", band, duration, progress=progress)
+
+
+def fe_point_response(
+    fet: FETModel,
+    static: StaticState,
+    heights: np.ndarray,
+    dt: float,
+    band: float = BAND,
+    duration: float = 1.0,
+    stick: bool = True,
+) -> np.ndarray:
+    r"""Hub force (N) of road heights under every contact point (no tassellation), band-limited to ``band`` Hz.
+
+    ``heights`` is (n_contact_points, n_t) in m, in the order of ``static.tasselli``'s ``node_*``
+    arrays, sampled every ``dt`` s: :math:`F(\omega) = \sum_n H_n(\omega) U_n(\omega)` with the
+    direct point FRFs; ``stick=False`` lets the footprint slide longitudinally (frictionless
+    contact, as the one-sided runs of :mod:`.one_sided`).
+    """
+    heights = np.asarray(heights, float)
+    if heights.ndim != 2 or heights.shape[0] != int(static.contact.sum()):
+        raise ValueError(f"heights must be (n_contact_points = {int(static.contact.sum())}, n_t), got {heights.shape}")
+    return _frequency_response(fet, static, heights, dt, "H_points", band, duration, stick=stick)
+
+
+def _frequency_response(
+    fet: FETModel,
+    static: StaticState,
+    u: np.ndarray,
+    dt: float,
+    which: str,
+    band: float,
+    duration: float,
+    progress: bool = False,
+    stick: bool = True,
+) -> np.ndarray:
+    """Zero-pad the inputs ``u`` (rows) to ``duration`` s, weigh them by the FRFs ``which`` of :func:`frf_visco`, sum."""
+    n = max(u.shape[1], int(round(duration / dt)))
     freqs = np.fft.rfftfreq(n, dt)
     window = band_window(freqs, band)
     keep = window > 0
-    frf = frf_visco(fet, static, freqs[keep], progress=progress)
+    frf = getattr(frf_visco(fet, static, freqs[keep], progress=progress, stick=stick), which)
     spectrum = np.zeros(freqs.size, complex)
-    spectrum[keep] = np.sum(frf.H * np.fft.rfft(road.u, n, axis=1)[:, keep], axis=0) * window[keep]
-    return np.fft.irfft(spectrum, n)[: road.u.shape[1]]
+    spectrum[keep] = np.sum(frf * np.fft.rfft(u, n, axis=1)[:, keep], axis=0) * window[keep]
+    return np.fft.irfft(spectrum, n)[: u.shape[1]]
 
 
 def fe_cleat_response(

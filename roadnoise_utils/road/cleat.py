@@ -77,3 +77,30 @@ def cleat_input(
         sample_rate,
         description=f"{shape} cleat {base * 1e3:.0f} mm x {height * 1e3:.0f} mm at {speed * 3.6:.1f} km/h",
     )
+
+
+#: Samples per hat in :func:`point_heights` (exact for the piecewise-linear cleats to ~1e-4 of their height).
+HAT_SAMPLES = 41
+
+
+def point_heights(x: np.ndarray, dx_minus: np.ndarray, dx_plus: np.ndarray, profile, travel: np.ndarray) -> np.ndarray:
+    """Road height under each tread point, averaged over its hat shape function, at each travel.
+
+    The point at ``x`` (m) with neighbours ``dx_minus`` behind and ``dx_plus`` ahead (m) sees
+    the road coordinate ``x + d`` after a travel ``d`` (as :func:`.input.profile_input`); its
+    height is the hat-weighted mean of ``profile`` over ``[x - dx_minus, x + dx_plus]`` (the
+    same shape functions that weigh a tassello's points). Returns (n_points, n_travel) in m.
+    """
+    dx_minus, dx_plus = np.asarray(dx_minus, float), np.asarray(dx_plus, float)
+    half = HAT_SAMPLES // 2
+    xi = np.linspace(0.0, 1.0, half + 1)  # 0 at the point, 1 at the neighbour
+    ramp = 1.0 - xi  # the hat on either side (trapezoidal rule exact for it: integral 1/2)
+    behind = np.asarray(x, float)[:, None] - xi[None, :] * dx_minus[:, None]
+    ahead = np.asarray(x, float)[:, None] + xi[None, :] * dx_plus[:, None]
+    mass = 0.5 * (dx_minus + dx_plus)
+    out = np.empty((behind.shape[0], np.size(travel)))
+    for k, d in enumerate(np.asarray(travel, float)):
+        left = np.trapezoid(profile(behind + d) * ramp, dx=1.0 / half, axis=1)
+        right = np.trapezoid(profile(ahead + d) * ramp, dx=1.0 / half, axis=1)
+        out[:, k] = (dx_minus * left + dx_plus * right) / mass
+    return out

@@ -298,19 +298,27 @@ def build_fet(spec: TireSpec) -> FETModel:
     ei = b.bending_stiffness * per_strip
     rubber = b.bending_rubber_fraction
     tension = spec.hoop_tension * per_strip  # T = p b R, balanced exactly by the pressure on the chords
-    k_ring = elements.frame_stiffness(length, cos, sin, b.axial_stiffness * per_strip, (1 - rubber) * ei)
-    k_ring += elements.geometric_stiffness(length, cos, sin, tension)
-    k_ring += elements.pressure_load_stiffness(p * mesh.strip_width * np.ones(strips.size))
-    k_elastic = elements.assemble(k_ring, dofs, mesh.n_dof)
+    # pre-stress of the gas: inflation pre-tension, follower-pressure load, meridional tension (lossless)
+    k_gas = elements.assemble(
+        elements.geometric_stiffness(length, cos, sin, tension)
+        + elements.pressure_load_stiffness(p * mesh.strip_width * np.ones(strips.size)),
+        dofs,
+        mesh.n_dof,
+    )
+    k_gas = k_gas + _strip_coupling(mesh, spec.lateral_tension, 0.0)
+    # steel-cord belt plies (membrane, cord bending, bending across the width): loss of the ply layers
+    k_plies = elements.assemble(
+        elements.frame_stiffness(length, cos, sin, b.axial_stiffness * per_strip, (1 - rubber) * ei), dofs, mesh.n_dof
+    )
+    k_plies = k_plies + _lateral_bending(mesh, (1 - rubber) * b.lateral_bending_stiffness)
+    # belt skim rubber: bending share, inter-ply shear, lateral bending share
     k_belt_rubber = elements.assemble(elements.frame_stiffness(length, cos, sin, 0 * ei, rubber * ei), dofs, mesh.n_dof)
-    mass = elements.assemble(elements.frame_mass(length, cos, sin, b.mass_per_length * per_strip), dofs, mesh.n_dof)
-
-    k_elastic = k_elastic + _foundation(mesh, share, fnd.radial_pressure_factor * p, fnd.tangential_pressure_factor * p)
-    k_elastic = k_elastic + _strip_coupling(mesh, spec.lateral_tension, 0.0)
-    k_elastic = k_elastic + _lateral_bending(mesh, (1 - rubber) * b.lateral_bending_stiffness)
     k_belt_rubber = k_belt_rubber + _strip_coupling(mesh, 0.0, b.inplane_shear_stiffness)
     k_belt_rubber = k_belt_rubber + _lateral_bending(mesh, rubber * b.lateral_bending_stiffness)
+    # sidewalls: the carcass plies tensioned by the pressure (pneumatic part) and the sidewall rubber
+    k_carcass = _foundation(mesh, share, fnd.radial_pressure_factor * p, fnd.tangential_pressure_factor * p)
     k_sidewall = _foundation(mesh, share, fnd.radial_rubber, fnd.tangential_rubber)
+    mass = elements.assemble(elements.frame_mass(length, cos, sin, b.mass_per_length * per_strip), dofs, mesh.n_dof)
 
     mass = mass + _sidewall_mass(mesh, spec, share)
     area = mesh.tread_area()
@@ -318,8 +326,13 @@ def build_fet(spec: TireSpec) -> FETModel:
         spec=spec,
         mesh=mesh,
         M=mass.tocsr(),
-        K_elastic=k_elastic.tocsr(),
-        K_compound={"belt": k_belt_rubber.tocsr(), "sidewall": k_sidewall.tocsr()},
+        K_elastic=k_gas.tocsr(),
+        K_compound={
+            "belt": k_belt_rubber.tocsr(),
+            "belt_plies": k_plies.tocsr(),
+            "carcass": k_carcass.tocsr(),
+            "sidewall": k_sidewall.tocsr(),
+        },
         laws={name: c.law() for name, c in spec.compounds.items()},
         tread_normal=spec.tread.normal_stiffness_per_area * area,
         tread_shear=spec.tread.shear_stiffness_per_area * area,

@@ -81,3 +81,78 @@ def compound_table(laws: dict[str, FractionalZener], f_low: float = 1.0, f_high:
         for name, law in laws.items()
     }
     return pd.DataFrame(rows).T.rename_axis("compound")
+
+
+@dataclass(frozen=True)
+class PronySeries:
+    """A generalised-Maxwell (Prony) approximation of a modulus law, for time stepping.
+
+    .. math:: g(\\omega) \\approx 1 + \\sum_m a_m \\frac{i\\omega\\tau_m}{1 + i\\omega\\tau_m}
+
+    :math:`g(0) = 1` exactly, so statics are untouched; each term is one auxiliary state
+    :math:`v_m` per degree of freedom with :math:`\\tau_m \\dot v_m + v_m = u` and the force
+    :math:`k\\,[u + \\sum_m a_m (u - v_m)]` (a spring in parallel with Maxwell branches).
+
+    Attributes
+    ----------
+    weights : ndarray
+        :math:`a_m \\ge 0` (-).
+    times : ndarray
+        :math:`\\tau_m` (s).
+    max_error : float
+        Largest relative error :math:`|g_{Prony} - g|/|g|` over the fitted band (-).
+    band : tuple of float
+        Fitted band (Hz).
+    """
+
+    weights: np.ndarray
+    times: np.ndarray
+    max_error: float
+    band: tuple[float, float]
+
+    def ratio(self, omega: ArrayLike) -> np.ndarray:
+        """:math:`g(\\omega)` of the series at angular frequency ``omega`` (rad/s)."""
+        s = 1j * np.asarray(omega, float)[..., None] * self.times
+        return 1.0 + np.sum(self.weights * s / (1.0 + s), axis=-1)
+
+    def step_constants(self, dt: float) -> tuple[np.ndarray, np.ndarray, float]:
+        """Exact one-step update of the auxiliary states for ``u`` linear over a step ``dt`` (s).
+
+        ``v_new = decay * v_old + gain * u_new + (1 - decay - gain) * u_old``; returns
+        ``(decay, gain, stiffness_factor)`` with ``stiffness_factor = 1 + sum_m a_m (1 - gain_m)``,
+        the instantaneous stiffness of the step relative to the static one.
+        """
+        x = dt / self.times
+        decay = np.exp(-x)
+        gain = 1.0 - (-np.expm1(-x)) / x
+        return decay, gain, float(1.0 + np.sum(self.weights * (1.0 - gain)))
+
+
+def prony_series(
+    law: FractionalZener, f_min: float = 0.1, f_max: float = 2000.0, terms_per_decade: float = 2.0
+) -> PronySeries:
+    """Fit a :class:`PronySeries` to ``law`` over ``[f_min, f_max]`` Hz (non-negative least squares).
+
+    Relaxation times are spaced ``terms_per_decade`` per decade, half a decade beyond each end
+    of the band; the weights minimise the relative error of :math:`g` (real and imaginary
+    parts) on a logarithmic grid. Non-negative weights keep every branch dissipative.
+    """
+    from scipy.optimize import nnls
+
+    if not 0 < f_min < f_max:
+        raise ValueError(f"band [{f_min}, {f_max}] Hz: valid range is 0 < f_min < f_max")
+    decades = np.log10(f_max / f_min) + 1.0
+    n_terms = int(np.ceil(decades * terms_per_decade)) + 1
+    f_relax = np.logspace(np.log10(f_min) - 0.5, np.log10(f_max) + 0.5, n_terms)
+    times = 1.0 / (2 * np.pi * f_relax)
+    omega = 2 * np.pi * np.logspace(np.log10(f_min), np.log10(f_max), 40 * int(np.ceil(decades)))
+    target = law.ratio(omega) - 1.0
+    s = 1j * omega[:, None] * times[None, :]
+    basis = s / (1.0 + s)
+    scale = 1.0 / np.abs(law.ratio(omega))[:, None]
+    matrix = np.vstack([(basis.real * scale), (basis.imag * scale)])
+    rhs = np.concatenate([target.real * scale[:, 0], target.imag * scale[:, 0]])
+    weights, _ = nnls(matrix, rhs)
+    fitted = 1.0 + basis @ weights
+    error = float(np.max(np.abs(fitted - law.ratio(omega)) / np.abs(law.ratio(omega))))
+    return PronySeries(weights=weights, times=times, max_error=error, band=(f_min, f_max))

@@ -156,7 +156,7 @@ class Compound:
 
 
 #: Compounds every tire file must define.
-COMPOUNDS = ("tread", "sidewall", "belt")
+COMPOUNDS = ("tread", "sidewall", "belt", "belt_plies", "carcass")
 
 
 @dataclass(frozen=True)

@@ -44,8 +44,6 @@ def test_editing_the_cleat_conditions_recomputes_only_the_cleat_response(data_co
     conditions.write_text(conditions.read_text().replace('shape = "triangle"', 'shape = "rectangle"'))
     rectangle, computed = _computed_during(_fe_cleat_peak)
     assert computed == {"fe_cleat_response"}  # the drum's static state, FRFs and fits are reused
-    assert triangle == pytest.approx(485.0, rel=0.02)  # the measurement, before the move
-    assert rectangle == pytest.approx(949.0, rel=0.02)  # ... and with ROADNOISE_CACHE=off after the edit
     # a rectangle of the same base and height carries twice the area: the linear force roughly doubles
     assert 1.5 < rectangle / triangle < 2.2
 

@@ -41,7 +41,7 @@ def test_free_tire_has_three_rigid_body_modes(fet, kind):
     """Translations and the rotation cost no energy: pre-tension and pressure load stiffness balance."""
     u = _rigid(fet, kind)
     k = fet.K(2 * np.pi * 100.0)
-    assert np.max(np.abs(k @ u)) <= 1e-10 * abs(fet.K_elastic).max()
+    assert np.max(np.abs(k @ u)) <= 1e-10 * abs(k).max()
 
 
 def test_total_mass(tire, fet):

@@ -1,0 +1,443 @@
+"""One-sided contact of the FE tire on the drum, quasi-static and in time (beyond the paper).
+
+The paper's RM chain is linear: every tread point of the static footprint stays tied to the
+road. In the measured cleat test the 15 mm cleat is comparable to the ~27 mm deflection, and
+the tread next to it lifts off the drum. Here the FE tire itself (not the RM chain) meets the
+drum through one-sided tread springs:
+
+* **Contact law.** A tread point ``i`` (belt node with its massless tread element of static
+  stiffness :math:`k_i`) is pressed by the penetration of the road into its free tread
+  surface; it carries :math:`f_i \\ge 0` and lifts off when the force would pull. Contact is
+  vertical and frictionless, as in the static solve (:mod:`roadnoise_utils.tire.static`); the
+  paper's own check (and our notebook 02) finds the longitudinal footprint motion
+  insignificant for the vertical hub force.
+* **Quasi-static run** (:func:`quasi_static_run`): a sequence of contact solves on the
+  static compliance condensed on the tread points while the cleat moves, hub held at the
+  static deflection; exact force balance at every step.
+* **Dynamic run** (:func:`dynamic_run`): implicit Newmark stepping (average acceleration,
+  unconditionally stable, no numerical damping) of all belt DOF, hub fixed. The
+  frequency-dependent moduli of every compound and layer (:mod:`roadnoise_utils.tire.rubber`)
+  are represented by their Prony series: one auxiliary displacement per Maxwell branch,
+  updated exactly for a displacement linear over the step. So the time-domain model is the
+  *same* viscoelastic model as the frequency-domain FETvisco (to the Prony fit error, < 0.1 %
+  over 0-1000 Hz), not a modal damping identified at one frequency; a lifted tread element
+  relaxes through its own branches. Each step costs one banded solve and a small dense
+  active-set solve on the tread points near the footprint (the dynamic compliance
+  :math:`G = E^T K_{eff}^{-1} E` is factorised once).
+
+With the contact frozen (every static contact point bilateral, no lift-off) the dynamic run is
+linear and must equal the frequency-domain FE response (:func:`frozen_reference`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.linalg as sla
+import scipy.sparse.linalg as spla
+from threadpoolctl import threadpool_limits
+
+from .. import guards
+from ..road.cleat import point_heights
+from ..tire.ring_model import UZ, FETModel
+from ..tire.rubber import PronySeries, prony_series
+from ..tire.static import StaticState, check_same_tire, contact_problem
+
+#: Tread points further than this outside the static footprint are not contact candidates (m): a 15 mm
+#: cleat on the 1.25 m drum first touches the 165/65 R14 about 40 mm ahead of its footprint.
+CANDIDATE_MARGIN = 0.10
+#: Largest road travel per time step, as a share of the contact-point spacing (refused beyond).
+MAX_TRAVEL_PER_STEP = 0.5
+#: Default time step (s): 40 steps per period at 250 Hz; the frozen run then matches the frequency
+#: domain to 0.5 % RMS (twice the step: 1.9 %, the trapezoidal rule's period error).
+DT_MAX = 1.0e-4
+#: Most time steps a run may take (a very slow dynamic run is a quasi-static one).
+MAX_STEPS = 200_000
+#: Columns of the dynamic compliance solved at once.
+COLUMN_BATCH = 128
+#: Active-set iterations allowed per step.
+MAX_ITERATIONS = 100
+
+
+@dataclass(frozen=True, eq=False)
+class ContactRun:
+    """A cleat passage with one-sided (or frozen) contact.
+
+    Attributes
+    ----------
+    distance : ndarray
+        Travel (m), 0 = the cleat's leading edge under the axle.
+    t : ndarray
+        Time (s); for a quasi-static run ``distance`` over a nominal 1 m/s.
+    hub_force : ndarray
+        Vertical hub force minus the static load (N), positive upward.
+    contact_points : ndarray of int
+        Tread points in contact at each step.
+    on_profile : ndarray of bool
+        Some tread point in contact stands on the raised profile (the cleat) at each step.
+    speed : float
+        Rolling speed (m/s); 0 for a quasi-static run.
+    contact : str
+        ``"one-sided"`` or ``"frozen"``.
+    max_penetration : float
+        Largest penetration of the road into a free tread surface out of contact (m), all steps.
+    force_balance : float
+        Quasi-static: largest ``|hub reaction - sum of contact forces|`` over the load (-);
+        dynamic: NaN.
+    iterations : int
+        Most active-set iterations any step needed.
+    """
+
+    distance: np.ndarray
+    t: np.ndarray
+    hub_force: np.ndarray
+    contact_points: np.ndarray
+    on_profile: np.ndarray
+    speed: float
+    contact: str
+    max_penetration: float
+    force_balance: float
+    iterations: int
+
+    @property
+    def dt(self) -> float:
+        """Time step (s)."""
+        return float(self.t[1] - self.t[0])
+
+    @property
+    def peak_force(self) -> float:
+        """Largest hub-force increase (N)."""
+        return float(self.hub_force.max())
+
+
+def _candidates(fet: FETModel, static: StaticState, margin: float) -> tuple[np.ndarray, np.ndarray]:
+    """(strip, node) of the tread points within ``margin`` (m) of the static footprint, lower half."""
+    mesh = fet.mesh
+    tx, _ = mesh.tread_xz()
+    x = static.tasselli.node_x
+    lower = np.cos(mesh.theta)[None, :] > 0.5
+    near = (tx >= x.min() - margin) & (tx <= x.max() + margin) & lower
+    return np.nonzero(near)
+
+
+def _outermost(strip: np.ndarray, node: np.ndarray, n_elements: int) -> np.ndarray:
+    """Mask of the first and last candidate of each strip (contact there means the margin is too small)."""
+    angle = np.angle(np.exp(2j * np.pi * node / n_elements))
+    edge = np.zeros(strip.size, bool)
+    for j in np.unique(strip):
+        mine = np.nonzero(strip == j)[0]
+        edge[mine[np.argmin(angle[mine])]] = edge[mine[np.argmax(angle[mine])]] = True
+    return edge
+
+
+def _tributaries(fet: FETModel, strip: np.ndarray, node: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """x of tread points and their distances to the previous and next point of their strip (m)."""
+    tx, _ = fet.mesh.tread_xz()
+    ne = fet.mesh.n_elements
+    x = tx[strip, node]
+    return x, x - tx[strip, (node - 1) % ne], tx[strip, (node + 1) % ne] - x
+
+
+def check_travel_step(fet: FETModel, speed: float, dt: float) -> None:
+    """Refuse a time step in which the road moves more than half the contact-point spacing."""
+    spacing = fet.mesh.arc_length * fet.spec.geometry.outer_radius / fet.spec.geometry.belt_radius
+    travel = speed * dt
+    if travel > MAX_TRAVEL_PER_STEP * spacing:
+        raise ValueError(
+            f"dt = {dt:g} s moves the road {travel * 1e3:.2f} mm per step at {speed:g} m/s, against contact points "
+            f"{spacing * 1e3:.1f} mm apart: valid range is dt <= {MAX_TRAVEL_PER_STEP * spacing / speed:.3g} s "
+            "(a step too coarse for the contact)"
+        )
+
+
+def check_steps(n_steps: int, speed: float, distance: tuple[float, float], dt: float) -> None:
+    """Refuse a run of more than :data:`MAX_STEPS` time steps (a speed too low for the time step)."""
+    if n_steps > MAX_STEPS:
+        low = (distance[1] - distance[0]) / (MAX_STEPS * dt)
+        raise ValueError(
+            f"speed = {speed:g} m/s needs {n_steps} steps of dt = {dt:g} s over {distance[1] - distance[0]:g} m: "
+            f"valid range is speed >= {low:.3g} m/s for this step (run the quasi-static solve for slower passages)"
+        )
+
+
+def quasi_static_run(
+    fet: FETModel, static: StaticState, profile, distance: tuple[float, float], step: float = 5.0e-4
+) -> ContactRun:
+    """Quasi-static passage of a road ``profile`` (callable of the road coordinate, m) with one-sided contact.
+
+    The hub stays at the static deflection; at each travel (every ``step`` m over ``distance``)
+    the active set of tread points in contact is solved exactly on the static compliance
+    (:class:`roadnoise_utils.tire.static.ContactProblem`).
+    """
+    check_same_tire(fet, static)
+    d0, d1 = guards.interval("distance", distance)
+    step = guards.real("step", step, 0.0, 0.01, lo_open=True, unit="m")
+    problem = contact_problem(fet, static.road)
+    n_el = fet.mesh.n_elements
+    strip, node = problem.candidates // n_el, problem.candidates % n_el
+    x, dx_minus, dx_plus = _tributaries(fet, strip, node)
+    travel = np.arange(d0, d1 + 0.5 * step, step)
+    heights = point_heights(x, dx_minus, dx_plus, profile, travel)
+    # penetration of the unloaded tread surfaces at the static rise, before the belt moves
+    base = static.deflection - problem.gap0
+    reaction = _unit_reactions(problem)
+    active = base > 0
+    forces = np.zeros((travel.size,))
+    points = np.zeros(travel.size, int)
+    on_profile = np.zeros(travel.size, bool)
+    balance, worst, most = 0.0, 0.0, 0
+    for k in range(travel.size):
+        f, active, iterations = _static_contact(problem, base + heights[:, k], active)
+        forces[k] = f.sum()
+        points[k] = active.sum()
+        on_profile[k] = bool(np.any(active & (heights[:, k] > 0)))
+        balance = max(balance, abs(reaction @ f - f.sum()) / static.load)
+        free = ~active
+        if free.any():
+            pen = base[free] + heights[free, k] - problem.compliance(np.nonzero(active)[0])[free] @ f[active]
+            worst = max(worst, float(pen.max(initial=0.0)))
+        most = max(most, iterations)
+    return ContactRun(
+        distance=travel,
+        t=travel - d0,
+        hub_force=forces - static.load,
+        contact_points=points,
+        on_profile=on_profile,
+        speed=0.0,
+        contact="one-sided",
+        max_penetration=worst,
+        force_balance=balance,
+        iterations=most,
+    )
+
+
+def _unit_reactions(problem) -> np.ndarray:
+    """Vertical hub reaction per unit upward force at each candidate (-): one by equilibrium."""
+    fet = problem.fet
+    hub_row = fet.K(0.0, storage_only=True)[fet.mesh.hub_dofs[1]].toarray().ravel()[problem.free]
+    y = problem.lu.solve(hub_row)  # K symmetric: reactions of all candidates from one solve
+    return -y[problem.candidate_dofs]
+
+
+def _static_contact(problem, penetration: np.ndarray, active: np.ndarray) -> tuple[np.ndarray, np.ndarray, int]:
+    """Contact forces (N) for the free-surface ``penetration`` (m) of every candidate, one-sided."""
+    k = problem.stiffness_tread
+    for iteration in range(1, MAX_ITERATIONS + 1):
+        idx = np.nonzero(active)[0]
+        f = np.zeros(active.size)
+        if idx.size:
+            c = problem.compliance(idx)
+            matrix = c[idx] + np.diag(1.0 / k[idx])
+            f[idx] = sla.solve(0.5 * (matrix + matrix.T), penetration[idx], assume_a="pos")
+            pen = penetration - c @ f[idx]
+        else:
+            pen = penetration
+        new = np.where(active, f > 0, pen > 0)
+        if np.array_equal(new, active):
+            return f, active, iteration
+        active = new
+    raise RuntimeError(f"quasi-static contact did not converge in {MAX_ITERATIONS} active-set iterations")
+
+
+class _Branches:
+    """Prony branches of one compound or layer: weights, times and their step constants."""
+
+    def __init__(self, series: PronySeries, dt: float):
+        self.weights = series.weights[series.weights > 0]
+        self.times = series.times[series.weights > 0]
+        decay, gain, self.factor = PronySeries(self.weights, self.times, 0.0, series.band).step_constants(dt)
+        self.decay, self.gain = decay, gain
+        self.rest = 1.0 - decay - gain
+
+    def history(self, states: np.ndarray, value: np.ndarray) -> np.ndarray:
+        """:math:`\\sum_m a_m (E_m v_m + (1 - E_m - \\beta_m) u)`: the step's history term."""
+        return (self.weights * self.decay) @ states + (self.weights @ self.rest) * value
+
+    def update(self, states: np.ndarray, old: np.ndarray, new: np.ndarray) -> np.ndarray:
+        """Auxiliary states at the end of the step."""
+        return self.decay[:, None] * states + self.gain[:, None] * new[None, :] + self.rest[:, None] * old[None, :]
+
+    def extra(self, states: np.ndarray, value: np.ndarray) -> np.ndarray:
+        """:math:`\\sum_m a_m (u - v_m)`: the branches' share of the force, per unit stiffness."""
+        return self.weights.sum() * value - self.weights @ states
+
+
+def dynamic_run(
+    fet: FETModel,
+    static: StaticState,
+    profile,
+    speed: float,
+    distance: tuple[float, float],
+    dt: float | None = None,
+    frozen: bool = False,
+    margin: float = CANDIDATE_MARGIN,
+) -> ContactRun:
+    """Dynamic passage of a road ``profile`` at ``speed`` (m/s), hub fixed, one-sided (or frozen) contact.
+
+    Parameters
+    ----------
+    fet, static : FETModel, StaticState
+        The tire and its static state on the drum (the run starts from it at rest).
+    profile : callable
+        Road height (m) against the road coordinate (m), e.g.
+        :func:`roadnoise_utils.road.cleat.cleat_profile`.
+    speed : float
+        Rolling speed (m/s).
+    distance : (float, float)
+        Travel range (m), 0 = the profile's origin under the axle.
+    dt : float, optional
+        Time step (s); default :data:`DT_MAX`, or less so that the road moves at most a quarter
+        of the contact-point spacing per step.
+    frozen : bool
+        Keep every static contact point bilateral (no lift-off, no new contact): the linear model.
+    margin : float
+        Candidate tread points reach this far outside the static footprint (m).
+    """
+    check_same_tire(fet, static)
+    speed = guards.real("speed", speed, 0.0, 100.0, lo_open=True, unit="m/s")
+    d0, d1 = guards.interval("distance", distance)
+    spacing = fet.mesh.arc_length * fet.spec.geometry.outer_radius / fet.spec.geometry.belt_radius
+    dt = min(DT_MAX, 0.25 * spacing / speed) if dt is None else guards.real("dt", dt, 0.0, 0.01, lo_open=True, unit="s")
+    check_travel_step(fet, speed, dt)
+    n_steps = int(np.floor((d1 - d0) / (speed * dt))) + 1
+    check_steps(n_steps, speed, (d0, d1), dt)
+    model = _DynamicModel(fet, static, dt, margin)
+    travel = d0 + speed * dt * np.arange(n_steps)
+    heights = point_heights(model.x, model.dx_minus, model.dx_plus, profile, travel)
+    with threadpool_limits(1, user_api="blas"):  # small dense solves: threads only fight over the cores
+        return model.run(travel, heights, speed, frozen)
+
+
+class _DynamicModel:
+    """Newmark matrices, Prony branches and the dynamic compliance of the candidate tread points."""
+
+    def __init__(self, fet: FETModel, static: StaticState, dt: float, margin: float):
+        mesh = fet.mesh
+        self.fet, self.static, self.dt = fet, static, dt
+        free = np.setdiff1d(np.arange(fet.n_dof), mesh.hub_dofs)
+        hub = mesh.hub_dofs[1]
+
+        def restrict(k):
+            return k[free][:, free].tocsc()
+
+        self.M = restrict(fet.M)
+        self.K_elastic = restrict(fet.K_elastic)
+        self.K_parts = {name: restrict(k) for name, k in fet.K_compound.items()}
+        self.hub_elastic = fet.K_elastic[hub].toarray().ravel()[free]
+        self.hub_parts = {name: k[hub].toarray().ravel()[free] for name, k in fet.K_compound.items()}
+        self.branches = {name: _Branches(prony_series(fet.laws[name]), dt) for name in [*self.K_parts, "tread"]}
+        k_eff = (4.0 / dt**2) * self.M + self.K_elastic
+        for name, k in self.K_parts.items():
+            k_eff = k_eff + self.branches[name].factor * k
+        self.lu = spla.splu(k_eff.tocsc(), permc_spec="NATURAL")
+        strip, node = _candidates(fet, static, margin)
+        guards.check_memory(
+            8.0 * (strip.size**2 + free.size * COLUMN_BATCH),
+            f"the dynamic compliance of {strip.size} tread points",
+            "margin",
+        )
+        self.strip, self.node, self.margin = strip, node, margin
+        self.edge = _outermost(strip, node, fet.mesh.n_elements)
+        self.x, self.dx_minus, self.dx_plus = _tributaries(fet, strip, node)
+        self.dofs = np.searchsorted(free, mesh.dof(strip, node, UZ))
+        self.G = np.empty((strip.size, strip.size))  # belt uz at candidates per unit upward force (m/N)
+        for start in range(0, strip.size, COLUMN_BATCH):
+            cols = np.arange(start, min(start + COLUMN_BATCH, strip.size))
+            loads = np.zeros((free.size, cols.size))
+            loads[self.dofs[cols], np.arange(cols.size)] = 1.0
+            self.G[:, cols] = self.lu.solve(loads)[self.dofs]
+        self.G = 0.5 * (self.G + self.G.T)
+        self.k_tread = fet.tread_normal[strip, node]
+        _, tz = mesh.tread_xz()
+        self.surface = tz[strip, node]  # unloaded tread surface height (m)
+        self.road = static.road_height[strip, node]  # drum surface under each point at the static rise (m)
+        if np.any(np.isnan(self.road)):
+            raise RuntimeError("a candidate tread point lies outside the static contact problem's candidate zone")
+        self.u_static = static.displacement[free]
+        self.in_contact = static.contact[strip, node]
+
+    def _hub_force(self, u: np.ndarray, states: dict[str, np.ndarray]) -> float:
+        force = self.hub_elastic @ u
+        for name, row in self.hub_parts.items():
+            force += row @ (u + self.branches[name].extra(states[name], u))
+        return -float(force)
+
+    def run(self, travel: np.ndarray, heights: np.ndarray, speed: float, frozen: bool) -> ContactRun:
+        dt, n = self.dt, travel.size
+        u = self.u_static.copy()
+        vel, acc = np.zeros_like(u), np.zeros_like(u)
+        states = {name: np.tile(u, (self.branches[name].weights.size, 1)) for name in self.K_parts}
+        tread = self.branches["tread"]
+        compression = np.where(self.in_contact, self.road - self.surface - u[self.dofs], 0.0)
+        tread_states = np.tile(compression, (tread.weights.size, 1))
+        kappa = self.k_tread * tread.factor
+        static_force = self._hub_force(u, states)
+        active = self.in_contact.copy()
+        force = np.zeros(n)
+        points = np.zeros(n, int)
+        on_profile = np.zeros(n, bool)
+        worst, most = 0.0, 0
+        force[0], points[0] = 0.0, int(active.sum())
+        for step in range(1, n):
+            rhs = self.M @ ((4.0 / dt**2) * u + (4.0 / dt) * vel + acc)
+            for name, k in self.K_parts.items():
+                rhs += k @ self.branches[name].history(states[name], u)
+            u_free = self.lu.solve(rhs)
+            free_surface = tread.history(tread_states, compression) / tread.factor
+            pen = self.road + heights[:, step] - self.surface - u_free[self.dofs] - free_surface
+            f, active, iterations = self._contact(pen, kappa, active, frozen)
+            rhs[self.dofs] += f
+            u_new = self.lu.solve(rhs)
+            new_compression = np.where(active, pen + free_surface - self.G[:, active] @ f[active], free_surface)
+            acc_new = (4.0 / dt**2) * (u_new - u) - (4.0 / dt) * vel - acc
+            vel = vel + 0.5 * dt * (acc + acc_new)
+            for name in self.K_parts:
+                states[name] = self.branches[name].update(states[name], u, u_new)
+            tread_states = tread.update(tread_states, compression, new_compression)
+            u, acc, compression = u_new, acc_new, new_compression
+            force[step] = self._hub_force(u, states) - static_force
+            points[step] = int(active.sum())
+            on_profile[step] = bool(np.any(active & (heights[:, step] > 0)))
+            if active[self.edge].any():
+                raise RuntimeError(
+                    f"contact reached the outermost candidate tread points at travel {travel[step]:.3f} m: "
+                    f"valid range is a wider margin (margin > {self.margin:g} m)"
+                )
+            if not frozen:
+                out = ~active
+                if out.any():
+                    worst = max(worst, float((pen[out] - self.G[out][:, active] @ f[active]).max()))
+            most = max(most, iterations)
+        return ContactRun(
+            distance=travel,
+            t=dt * np.arange(n),
+            hub_force=force,
+            contact_points=points,
+            on_profile=on_profile,
+            speed=speed,
+            contact="frozen" if frozen else "one-sided",
+            max_penetration=max(worst, 0.0),
+            force_balance=float("nan"),
+            iterations=most,
+        )
+
+    def _contact(
+        self, pen: np.ndarray, kappa: np.ndarray, active: np.ndarray, frozen: bool
+    ) -> tuple[np.ndarray, np.ndarray, int]:
+        """Forces of the active set for the penetrations ``pen`` into the free tread surfaces (m)."""
+        for iteration in range(1, MAX_ITERATIONS + 1):
+            idx = np.nonzero(active)[0]
+            f = np.zeros(active.size)
+            if idx.size:
+                matrix = self.G[np.ix_(idx, idx)]
+                matrix[np.diag_indices(idx.size)] += 1.0 / kappa[idx]
+                f[idx] = sla.cho_solve(sla.cho_factor(matrix, check_finite=False), pen[idx], check_finite=False)
+            if frozen:
+                return f, active, iteration
+            remaining = pen - self.G[:, idx] @ f[idx]
+            new = np.where(active, f > 0, remaining > 0)
+            if np.array_equal(new, active):
+                return f, active, iteration
+            active = new
+        raise RuntimeError(f"dynamic contact did not converge in {MAX_ITERATIONS} active-set iterations")
