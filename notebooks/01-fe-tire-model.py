@@ -294,7 +294,7 @@ plt.show()
 # NBVAL_CHECK_OUTPUT
 # Calibration table "target / obtained"
 calibration = ru.experiments.calibration_table(tire)
-print(calibration.drop(columns="source").to_string(float_format=lambda v: f"{v:.1f}"))
+print(calibration.drop(columns="source").to_string(float_format=lambda v: f"{v:.1f}" if abs(v) >= 1 else f"{v:.3f}"))
 assert calibration["ok"].all()
 
 # %% [markdown]
