@@ -109,3 +109,11 @@ def test_bad_input_names_the_parameter(drum_tire):
         ru.experiments.one_sided_cleat.check_cleat_height(static, 0.03)
     with pytest.raises(RuntimeError, match="margin"):
         one_sided.dynamic_run(fet, static, CLEAT, 30 / 3.6, (-0.15, 0.0), margin=0.01)
+
+
+def test_a_run_starting_on_the_cleat_and_a_bad_margin_are_refused(drum_tire):
+    fet, static = drum_tire
+    with pytest.raises(ValueError, match="already touches the tread at the first travel"):
+        one_sided.dynamic_run(fet, static, CLEAT, 30 / 3.6, (-0.05, 0.0))
+    with pytest.raises(ValueError, match="margin = nan"):
+        one_sided.dynamic_run(fet, static, CLEAT, 30 / 3.6, (-0.15, 0.0), margin=float("nan"))
