@@ -13,8 +13,10 @@ Kung, Soedel & Yang 1986; multi-ring belts as in Kindt 2009):
   meridional membrane tension of the crown (radial motion) and lateral bending across the
   width (three-strip stencil), so the footprint has rows and columns.
 * **Sidewalls + air**: a radial and a tangential foundation from every belt node to the rigid
-  rim, part pneumatic (proportional to the inflation pressure, elastic) and part rubber
-  (viscoelastic, compound ``sidewall``), stiffer at the edge strips where the sidewalls attach.
+  rim, part pneumatic (proportional to the inflation pressure, carried by the carcass plies:
+  layer law ``carcass``) and part rubber (compound ``sidewall``), stiffer at the edge strips
+  where the sidewalls attach. The steel-cord stiffness of the belt has its own layer law
+  (``belt_plies``): damping comes from the layers that strain; only the gas pre-stress is lossless.
 * **Tread**: a massless viscoelastic (compound ``tread``) foundation under each belt node, active
   where the node is in contact; its mass is carried by the belt. A crown drop lowers the
   tread surface towards the shoulders.
@@ -22,7 +24,7 @@ Kung, Soedel & Yang 1986; multi-ring belts as in Kindt 2009):
   fixed for the fixed-hub model.
 
 The rubber moduli depend on frequency, so the stiffness is
-``K(omega) = K_elastic + sum_c g_c(omega) K_c`` (:mod:`.viscoelastic`) and a frequency costs
+``K(omega) = K_elastic + sum_c g_c(omega) K_c`` (:mod:`.rubber`) and a frequency costs
 one sparse solve. Coordinates: ``x`` forward (direction of travel), ``z`` up, ``y`` lateral;
 node angle ``theta`` measured from the bottom of the tire (centre of the footprint),
 increasing counter-clockwise (towards +x first).
@@ -146,8 +148,8 @@ class FETModel:
     M : scipy.sparse.csr_matrix
         Mass matrix (kg), all DOF; the hub DOF carry the rim-side sidewall mass only.
     K_elastic : scipy.sparse.csr_matrix
-        Frequency-independent stiffness (N/m): cords, inflation pre-tension, pressure load
-        stiffness, pneumatic foundation, meridional tension coupling.
+        Frequency-independent (lossless) stiffness of the gas pre-stress (N/m): inflation
+        pre-tension, pressure load stiffness, meridional tension coupling.
     K_compound : dict of str to scipy.sparse.csr_matrix
         Stiffness of each rubber compound at its static modulus (N/m), scaled by
         :math:`g_c(\\omega)` in :meth:`K`. The tread has none here: it acts only in contact
