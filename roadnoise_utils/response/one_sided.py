@@ -141,9 +141,14 @@ def _tributaries(fet: FETModel, strip: np.ndarray, node: np.ndarray) -> tuple[np
     return x, x - tx[strip, (node - 1) % ne], tx[strip, (node + 1) % ne] - x
 
 
+def contact_spacing(fet: FETModel) -> float:
+    """Distance between neighbouring tread points along the tread surface (m)."""
+    return fet.mesh.arc_length * fet.spec.geometry.outer_radius / fet.spec.geometry.belt_radius
+
+
 def check_travel_step(fet: FETModel, speed: float, dt: float) -> None:
     """Refuse a time step in which the road moves more than half the contact-point spacing."""
-    spacing = fet.mesh.arc_length * fet.spec.geometry.outer_radius / fet.spec.geometry.belt_radius
+    spacing = contact_spacing(fet)
     travel = speed * dt
     if travel > MAX_TRAVEL_PER_STEP * spacing:
         raise ValueError(
@@ -298,7 +303,7 @@ def dynamic_run(
     speed = guards.real("speed", speed, 0.0, 100.0, lo_open=True, unit="m/s")
     margin = guards.real("margin", margin, 0.0, 0.5, lo_open=True, unit="m")
     d0, d1 = guards.interval("distance", distance)
-    spacing = fet.mesh.arc_length * fet.spec.geometry.outer_radius / fet.spec.geometry.belt_radius
+    spacing = contact_spacing(fet)
     dt = min(DT_MAX, 0.25 * spacing / speed) if dt is None else guards.real("dt", dt, 0.0, 0.01, lo_open=True, unit="s")
     check_travel_step(fet, speed, dt)
     n_steps = int(np.floor((d1 - d0) / (speed * dt))) + 1
