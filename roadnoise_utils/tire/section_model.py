@@ -1,0 +1,206 @@
+"""The cross-section FE tire: harmonic matrices about the inflated state.
+
+:func:`harmonic_operators` integrates the element matrices of a :class:`.SectionMesh` once, as
+polynomials in the harmonic number ``n`` (:mod:`.waveguide`), solves the inflation (``n = 0``,
+beads clamped, linear) for the pre-stress and returns a :class:`HarmonicOperators` from which
+any harmonic's stiffness and mass cost a few sparse additions:
+
+.. math:: K_n(\\omega) = w_n\\Big[\\sum_c g_c(\\omega)\\,K_c(n) + K_\\sigma(n) - p\\,H(n)\\Big],
+          \\qquad M_n = w_n M.
+
+The inflation pre-stress comes from a *linear* solve of the layered solid under the pressure,
+about the given (inflated) geometry: it carries the membrane forces of the cord layers (the
+membrane solution of the inflated torus, checked in the tests) without the geometric
+nonlinearity of inflating from the moulded shape.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+
+from .rubber import FractionalZener
+from .section_mesh import SectionMesh
+from .waveguide import (
+    gradient_operators,
+    harmonic_weight,
+    point_geometry,
+    pressure_operators,
+    strain_operators,
+    element_dofs,
+    assemble_points,
+)
+
+
+@dataclass(frozen=True, eq=False)
+class HarmonicOperators:
+    """Harmonic stiffness and mass of a cross-section tire, per radian, as polynomials in ``n``.
+
+    Attributes
+    ----------
+    mesh : SectionMesh
+    elastic : dict of str to tuple of 3 csr_matrix
+        ``(K0, K1, K2)`` of each compound at its static modulus (N/m per radian).
+    geometric : tuple of 3 csr_matrix
+        Geometric stiffness of the inflation pre-stress, same form.
+    pressure : tuple of 2 csr_matrix
+        Load stiffness of the follower pressure, ``-p (H0 + n H1)``.
+    mass : csr_matrix
+        Consistent mass per radian (kg).
+    fixed : ndarray of int
+        DOF clamped to the rim (all DOF of the bead stations).
+    laws : dict of str to FractionalZener
+    pressure_value : float
+        Inflation pressure (Pa).
+    inflation : ndarray (n_dof,)
+        Displacement of the inflation solve (m), ``n = 0``.
+    stress : ndarray (q, 6)
+        Inflation pre-stress at the quadrature points (Pa), Voigt ``[rr, tt, yy, ty, ry, rt]``.
+    """
+
+    mesh: SectionMesh
+    elastic: dict[str, tuple[sp.csr_matrix, sp.csr_matrix, sp.csr_matrix]]
+    geometric: tuple[sp.csr_matrix, sp.csr_matrix, sp.csr_matrix]
+    pressure: tuple[sp.csr_matrix, sp.csr_matrix]
+    mass: sp.csr_matrix
+    fixed: np.ndarray
+    laws: dict[str, FractionalZener]
+    pressure_value: float
+    inflation: np.ndarray
+    stress: np.ndarray
+
+    @property
+    def n_dof(self) -> int:
+        return self.mesh.n_dof
+
+    @property
+    def free(self) -> np.ndarray:
+        """DOF not clamped to the rim."""
+        return np.setdiff1d(np.arange(self.n_dof), self.fixed)
+
+    def gas(self, n: int) -> sp.csr_matrix:
+        """Lossless stiffness of the gas pre-stress at harmonic ``n`` (without ``w_n``)."""
+        k0, k1, k2 = self.geometric
+        p0, p1 = self.pressure
+        return (k0 + n * k1 + n * n * k2 + p0 + n * p1).tocsr()
+
+    def compound(self, name: str, n: int) -> sp.csr_matrix:
+        """Static stiffness of one compound at harmonic ``n`` (without ``w_n``)."""
+        k0, k1, k2 = self.elastic[name]
+        return (k0 + n * k1 + n * n * k2).tocsr()
+
+    def stiffness(self, n: int, omega: float = 0.0, storage_only: bool = False) -> sp.csr_matrix:
+        """``K_n(omega)`` (N/m), all DOF, weight ``w_n`` included; complex unless ``storage_only``."""
+        total = self.gas(n).astype(float if storage_only else complex)
+        for name in self.elastic:
+            g = complex(self.laws[name].ratio(omega))
+            total = total + (g.real if storage_only else g) * self.compound(name, n)
+        return (harmonic_weight(n) * total).tocsr()
+
+    def mass_matrix(self, n: int) -> sp.csr_matrix:
+        """``M_n`` (kg), weight ``w_n`` included."""
+        return (harmonic_weight(n) * self.mass).tocsr()
+
+
+def _polynomial_blocks(b0: np.ndarray, b1: np.ndarray, weight: np.ndarray, middle: np.ndarray) -> tuple:
+    """Per-point ``(B0' D B0, B0' D B1 + B1' D B0, B1' D B1) * weight`` for operators (q, m, 27)."""
+    d_b0 = np.einsum("qij,qjb->qib", middle, b0)
+    d_b1 = np.einsum("qij,qjb->qib", middle, b1)
+    k0 = np.einsum("qia,qib->qab", b0, d_b0)
+    k1 = np.einsum("qia,qib->qab", b0, d_b1)
+    k2 = np.einsum("qia,qib->qab", b1, d_b1)
+    w = weight[:, None, None]
+    return k0 * w, (k1 + np.transpose(k1, (0, 2, 1))) * w, k2 * w
+
+
+def harmonic_operators(
+    mesh: SectionMesh,
+    laws: dict[str, FractionalZener],
+    inflation_pressure: float,
+    fixed: np.ndarray | None = None,
+    prestress: np.ndarray | None = None,
+) -> HarmonicOperators:
+    """Integrate the harmonic matrices and the inflation pre-stress of a cross-section mesh.
+
+    Parameters
+    ----------
+    mesh : SectionMesh
+    laws : dict of str to FractionalZener
+        Modulus law of every compound named by the mesh's plies.
+    inflation_pressure : float
+        Pa, on the inner face (node row 0).
+    fixed : ndarray of int, optional
+        DOF clamped to the rim; default every DOF of the two bead stations.
+    prestress : ndarray (q, 6), optional
+        A given pre-stress (Pa) instead of the inflation solve (verification of thin rings).
+    """
+    missing = sorted(set(mesh.points.compounds) - set(laws))
+    if missing:
+        raise ValueError(f"no modulus law for compound(s) {missing}")
+    pts = mesh.points
+    geo = point_geometry(mesh.r, mesh.y, mesh.elements, pts)
+    dofs = element_dofs(mesh.elements)
+    n_dof = mesh.n_dof
+    bc, bn = strain_operators(geo)
+    elastic = {}
+    for index, name in enumerate(pts.compounds):
+        sel = pts.compound == index
+        blocks = _polynomial_blocks(bc[sel], bn[sel], geo.volume[sel], pts.stiffness[sel])
+        elastic[name] = tuple(assemble_points(b, pts.element[sel], dofs, n_dof) for b in blocks)
+    shape = np.zeros((geo.shape.shape[0], 3, 27))
+    for c in range(3):
+        shape[:, c, c::3] = geo.shape
+    mass = assemble_points(
+        np.einsum("qia,qib->qab", shape, shape) * (pts.density * geo.volume)[:, None, None], pts.element, dofs, n_dof
+    )
+    if fixed is None:
+        fixed = (3 * mesh.bead_nodes[:, None] + np.arange(3)).ravel()
+    fixed = np.unique(np.asarray(fixed, int))
+    dv, h0, h1 = pressure_operators(mesh.r, mesh.y, mesh.face_lines(0), n_dof)
+    if prestress is None:
+        inflation, stress = _inflate(elastic, dv, fixed, bc, dofs, pts, inflation_pressure, n_dof)
+    else:
+        inflation, stress = np.zeros(n_dof), np.asarray(prestress, float)
+    geometric = _geometric_stiffness(geo, stress, pts.element, dofs, n_dof)
+    p = inflation_pressure
+    return HarmonicOperators(
+        mesh=mesh,
+        elastic=elastic,
+        geometric=geometric,
+        pressure=(-p * h0, -p * h1),
+        mass=mass,
+        fixed=fixed,
+        laws=dict(laws),
+        pressure_value=p,
+        inflation=inflation,
+        stress=stress,
+    )
+
+
+def _inflate(elastic, dv, fixed, bc, dofs, pts, pressure, n_dof):
+    """Linear inflation solve at ``n = 0`` (beads clamped); displacement and point stresses."""
+    k = sum(parts[0] for parts in elastic.values()) * harmonic_weight(0)
+    free = np.setdiff1d(np.arange(n_dof), fixed)
+    load = pressure * harmonic_weight(0) * dv
+    u = np.zeros(n_dof)
+    u[free] = spla.spsolve(k[free][:, free].tocsc(), load[free])
+    strain = np.einsum("qib,qb->qi", bc, u[dofs[pts.element]])
+    return u, np.einsum("qij,qj->qi", pts.stiffness, strain)
+
+
+def _geometric_stiffness(geo, stress, element, dofs, n_dof):
+    """``(K0, K1, K2)`` of the initial-stress energy 1/2 sigma_ij u_k,i u_k,j (per radian)."""
+    s = np.zeros((stress.shape[0], 3, 3))
+    voigt = ((0, 0), (1, 1), (2, 2), (1, 2), (0, 2), (0, 1))
+    for col, (i, j) in enumerate(voigt):
+        s[:, i, j] = s[:, j, i] = stress[:, col]
+    gc, gn = gradient_operators(geo)
+    parts = [np.zeros((stress.shape[0], 27, 27)) for _ in range(3)]
+    for k in range(3):
+        blocks = _polynomial_blocks(gc[:, k], gn[:, k], geo.volume, s)
+        for part, block in zip(parts, blocks):
+            part += block
+    return tuple(assemble_points(part, element, dofs, n_dof) for part in parts)
