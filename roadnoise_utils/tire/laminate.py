@@ -54,7 +54,10 @@ def halpin_tsai(fibre: float, matrix: float, volume_fraction: float, xi: float) 
 
 
 def cord_ply_constants(
-    cord_modulus: float, matrix_modulus: float, volume_fraction: float, cord_poisson: float = 0.3,
+    cord_modulus: float,
+    matrix_modulus: float,
+    volume_fraction: float,
+    cord_poisson: float = 0.3,
     matrix_poisson: float = 0.49,
 ) -> dict[str, float]:
     """Engineering constants of a unidirectional cord-rubber ply (Pa, -).
@@ -125,9 +128,7 @@ def cord_layer(constants: dict[str, float], cord_angle_deg: float) -> np.ndarray
     for sign in (1.0, -1.0):
         beta = np.radians(sign * cord_angle_deg)
         # old axes (L, T, n); new axes (n, theta, s): theta = cos b L - sin b T, s = sin b L + cos b T
-        rot = np.array(
-            [[0.0, 0.0, 1.0], [np.cos(beta), -np.sin(beta), 0.0], [np.sin(beta), np.cos(beta), 0.0]]
-        )
+        rot = np.array([[0.0, 0.0, 1.0], [np.cos(beta), -np.sin(beta), 0.0], [np.sin(beta), np.cos(beta), 0.0]])
         out += 0.5 * rotate(c_fibre, rot)
     # the balanced average has no normal-shear coupling left; remove round-off
     out[:3, 3:5] = out[3:5, :3] = 0.0

@@ -128,7 +128,9 @@ def structured_mesh(node_r: np.ndarray, node_y: np.ndarray, stacks: list[list[li
                 for t, wt in zip(tg, tw):
                     eta = eta0 + (eta1 - eta0) * (t + 1.0) / 2.0
                     for x, wx in zip(xg, wg):
-                        records.append((index, x, eta, wx * wt * ply.fraction, ply, names[ply.name], compounds[ply.compound]))
+                        records.append(
+                            (index, x, eta, wx * wt * ply.fraction, ply, names[ply.name], compounds[ply.compound])
+                        )
                 eta0 = eta1
     elements = np.asarray(elements)
     element = np.array([rec[0] for rec in records])

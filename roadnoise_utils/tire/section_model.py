@@ -25,13 +25,13 @@ import scipy.sparse.linalg as spla
 from .rubber import FractionalZener
 from .section_mesh import SectionMesh
 from .waveguide import (
+    assemble_points,
+    element_dofs,
     gradient_operators,
     harmonic_weight,
     point_geometry,
     pressure_operators,
     strain_operators,
-    element_dofs,
-    assemble_points,
 )
 
 

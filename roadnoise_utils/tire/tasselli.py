@@ -60,6 +60,14 @@ class Tasselli:
     centre_y: np.ndarray
     area: np.ndarray
     bounds: np.ndarray
+    node_width: np.ndarray | None = None
+
+    @property
+    def widths(self) -> np.ndarray:
+        """Lateral tributary width of each contact node (m): ``node_width``, else ``strip_width``."""
+        if self.node_width is None:
+            return np.full(self.node_x.size, self.strip_width)
+        return self.node_width
 
     @property
     def n(self) -> int:
@@ -90,7 +98,7 @@ class Tasselli:
         """
         total = np.zeros(self.node_x.size)
         weight = np.zeros(self.node_x.size)
-        dy = self.strip_width
+        dy = self.widths
         for dx_side, sx in ((self.node_dx_minus, -1.0), (self.node_dx_plus, 1.0)):
             for sy in (-1.0, 1.0):
                 # Gauss points on [0, 1] in each direction, hat = (1 - a)(1 - b)
@@ -99,11 +107,11 @@ class Tasselli:
                 aa, bb = np.meshgrid(a, a, indexing="ij")
                 ww = np.outer(wa, wa) * (1 - aa) * (1 - bb)
                 x = self.node_x[:, None, None] + sx * dx_side[:, None, None] * aa[None]
-                y = self.node_y[:, None, None] + sy * dy * bb[None]
+                y = self.node_y[:, None, None] + sy * dy[:, None, None] * bb[None]
                 z = np.asarray(height(x, y), dtype=float)
                 if not np.all(np.isfinite(z)):
                     raise ValueError("road height field returned NaN or inf inside the footprint")
-                jac = dx_side[:, None, None] * dy
+                jac = dx_side[:, None, None] * dy[:, None, None]
                 total += np.sum(ww[None] * z * jac, axis=(1, 2))
                 weight += np.sum(ww[None] * jac, axis=(1, 2))
         return total / weight
@@ -145,6 +153,7 @@ def tassellate(
     strip_width: float,
     target_length: float,
     strips_per_column: int,
+    node_width: np.ndarray | None = None,
 ) -> Tasselli:
     """Divide contact nodes into rows and columns of tasselli.
 
@@ -162,6 +171,9 @@ def tassellate(
         Longest row length (m); rows are equal bands no longer than this.
     strips_per_column : int
         Belt strips per column of tasselli.
+    node_width : ndarray, optional
+        Lateral tributary width of each node (m) where it differs from node to node (the
+        cross-section tire's quadratic elements); default ``strip_width`` for every node.
     """
     column_width = strip_width * strips_per_column
     if column_width > MAX_TASSELLO_SIZE + 1e-12 or target_length > MAX_TASSELLO_SIZE + 1e-12:
@@ -185,7 +197,8 @@ def tassellate(
     key = rows * (columns.max() + 1) + columns
     unique_keys, node_tassello = np.unique(key, return_inverse=True)
     n = unique_keys.size
-    area = 0.5 * (node_dx_minus + node_dx_plus) * strip_width
+    widths = np.full(node_x.size, strip_width) if node_width is None else np.asarray(node_width, float)
+    area = 0.5 * (node_dx_minus + node_dx_plus) * widths
     tassello_area = np.bincount(node_tassello, weights=area, minlength=n)
     weight = area / tassello_area[node_tassello]
 
@@ -199,8 +212,8 @@ def tassellate(
         [
             _reduce(node_x - 0.5 * node_dx_minus, np.min),
             _reduce(node_x + 0.5 * node_dx_plus, np.max),
-            _reduce(node_y - 0.5 * strip_width, np.min),
-            _reduce(node_y + 0.5 * strip_width, np.max),
+            _reduce(node_y - 0.5 * widths, np.min),
+            _reduce(node_y + 0.5 * widths, np.max),
         ]
     )
     return Tasselli(
@@ -223,4 +236,5 @@ def tassellate(
         centre_y=np.bincount(node_tassello, weights=weight * node_y, minlength=n),
         area=tassello_area,
         bounds=bounds,
+        node_width=None if node_width is None else widths,
     )

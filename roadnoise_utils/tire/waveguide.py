@@ -92,7 +92,9 @@ class PointGeometry:
     volume: np.ndarray  # (q,) weight * detJ * r : the volume per radian of circumference
 
 
-def point_geometry(node_r: np.ndarray, node_y: np.ndarray, elements: np.ndarray, points: QuadraturePoints) -> PointGeometry:
+def point_geometry(
+    node_r: np.ndarray, node_y: np.ndarray, elements: np.ndarray, points: QuadraturePoints
+) -> PointGeometry:
     """Shape functions, Cartesian derivatives and volume weights at every quadrature point."""
     ni, di = lagrange3(points.xi)
     nj, dj = lagrange3(points.eta)

@@ -1,0 +1,204 @@
+"""The cross-section tire loaded on a flat road or a drum: footprint, pressure map, K_v.
+
+The tire is linear about its inflated state (pre-stress and pressure load stiffness included,
+:mod:`.section_model`); loading adds one-sided vertical, frictionless contact on the contact
+grid (:mod:`.section_contact`), solved by the primal active set shared with the ring model
+(:func:`.static.active_set`). This neglects what a nonlinear FE solve of the loading would
+add: the change of the pre-stress and of the geometry with the 20-25 mm deflection (the
+sidewalls' bulge), friction in the footprint, and the tread's own nonlinearity.
+
+The hub force is computed independently of the contact solve, as the rim's reaction in the
+``n = 1`` harmonic (:func:`.section_dynamics.rim_transfer`); it equals the load to round-off
+once each contact force is taken as the arc-spread load the Green's functions assume (its
+vertical resultant is ``sinc(dtheta / 2)`` of the centre value: 5e-6 at 3 mm).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import pandas as pd
+
+from .cross_section import CrossSectionSpec
+from .section_contact import ContactGrid, contact_grid, harmonic_flexibility, vertical_compliance
+from .section_dynamics import rim_transfer
+from .section_geometry import Meridian, section_mesh
+from .section_mesh import SectionMesh
+from .section_model import HarmonicOperators, harmonic_operators
+from .static import RoadSurface, active_set, check_load, make_road
+from .tasselli import Tasselli, tassellate
+
+
+@dataclass(frozen=True, eq=False)
+class SectionTire:
+    """A cross-section tire built from its file: mesh, harmonic operators, contact grid."""
+
+    spec: CrossSectionSpec
+    mesh: SectionMesh
+    line: Meridian
+    ops: HarmonicOperators
+    grid: ContactGrid
+
+    @property
+    def harmonics(self) -> int:
+        return self.spec.mesh.harmonics
+
+
+def build_section_tire(spec: CrossSectionSpec) -> SectionTire:
+    """Mesh the cross-section, integrate its harmonic matrices and inflate it."""
+    mesh, line = section_mesh(spec)
+    ops = harmonic_operators(mesh, spec.laws(), spec.operating.inflation_pressure)
+    grid = contact_grid(mesh, line, spec.mesh.contact_spacing, spec.geometry.outer_radius)
+    return SectionTire(spec=spec, mesh=mesh, line=line, ops=ops, grid=grid)
+
+
+@dataclass(frozen=True, eq=False)
+class SectionStaticState:
+    """The loaded cross-section tire (the :class:`.static.StaticState` of this model).
+
+    Arrays over the contact grid are (n_cols, n_rows): ``contact`` (bool), ``contact_force``
+    (vertical, N), ``pressure`` (force over the point's tread area, Pa). ``hub_force`` is the
+    vertical force on the fixed rim from the ``n = 1`` reaction (N); ``vertical_stiffness`` the
+    tangent dF/d(delta) with the contact set frozen (N/m).
+    """
+
+    road: RoadSurface
+    load: float
+    deflection: float
+    contact: np.ndarray
+    contact_force: np.ndarray
+    pressure: np.ndarray
+    hub_force: float
+    vertical_stiffness: float
+    tasselli: Tasselli
+    iterations: int
+    grid: ContactGrid = field(repr=False)
+    tire: CrossSectionSpec | None = field(default=None, repr=False)
+
+    @property
+    def footprint_length(self) -> float:
+        """Longest contact length (m), the points' arcs included."""
+        t = self.tasselli
+        return float(np.max(t.node_x + 0.5 * t.node_dx_plus) - np.min(t.node_x - 0.5 * t.node_dx_minus))
+
+    @property
+    def footprint_width(self) -> float:
+        """Width of the columns in contact (m), their tributary widths included."""
+        t = self.tasselli
+        return float(np.max(t.node_y + 0.5 * t.widths) - np.min(t.node_y - 0.5 * t.widths))
+
+    @property
+    def contact_area(self) -> float:
+        return float(np.sum(self.tasselli.area))
+
+    @property
+    def mean_pressure(self) -> float:
+        return self.load / self.contact_area
+
+    @property
+    def points(self) -> tuple[np.ndarray, np.ndarray]:
+        """Column and row index of every point in contact (contact order of the FRFs)."""
+        return np.nonzero(self.contact)
+
+
+def _candidates(grid: ContactGrid, road: RoadSurface) -> np.ndarray:
+    x, z = grid.xz()
+    top = z.min()
+    return (z - top + road.drop(x)).ravel()
+
+
+def _rim_force(tire: SectionTire, forces: np.ndarray) -> float:
+    """Vertical force on the fixed rim (N) from the ``n = 1`` reaction to the contact forces."""
+    grid = tire.grid
+    transfer = rim_transfer(tire.ops, grid.dofs, np.array([0.0])).contact[0].real
+    q_r, q_t = n1_loads(grid, forces)
+    c = grid.n_cols
+    return float(transfer[:c] @ q_r + transfer[c:] @ q_t)
+
+
+def n1_loads(grid: ContactGrid, forces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Generalised ``n = 1`` symmetric-set loads (r, theta) per column of vertical point forces (n_cols, n_rows)."""
+    spread = np.sinc(grid.dtheta / (2 * np.pi))
+    th = grid.theta[None, :]
+    return (-(np.cos(th) ** 2) * forces).sum(1) * spread, ((np.sin(th) ** 2) * forces).sum(1) * spread
+
+
+def section_tasselli(tire: SectionTire, contact: np.ndarray) -> Tasselli:
+    """Tasselli of a contact set: rows of ``target_length``, columns of equal lateral bands."""
+    grid, spec = tire.grid, tire.spec.tasselli
+    col, row = np.nonzero(contact)
+    x, _ = grid.xz()
+    dx = grid.radius[col] * grid.dtheta
+    spacing = grid.width.sum() / (grid.n_cols - 1)
+    edges = grid.y - 0.5 * grid.width
+    left, right = edges.min(), (grid.y + 0.5 * grid.width).max()
+    n_bands = max(1, int(round((right - left) / (spacing * spec.strips_per_column))))
+    band = np.clip(((grid.y - left) / ((right - left) / n_bands)).astype(int), 0, n_bands - 1)
+    return tassellate(
+        node_strip=band[col],
+        node_index=row,
+        node_x=x[col, row],
+        node_y=grid.y[col],
+        node_dx_minus=dx,
+        node_dx_plus=dx,
+        strip_width=(right - left) / n_bands,
+        target_length=spec.target_length,
+        strips_per_column=1,
+        node_width=grid.width[col],
+    )
+
+
+def solve_section_static(
+    tire: SectionTire, road: str = "flat", load: float | None = None, drum_radius: float | None = None
+) -> SectionStaticState:
+    """Load the cross-section tire against a flat road or a drum (see the module notes)."""
+    surface = make_road(road, drum_radius)
+    load = tire.spec.operating.vertical_load if load is None else check_load(load)
+    grid = tire.grid
+    flex = harmonic_flexibility(tire.ops, grid.dofs, tire.harmonics)
+    compliance = vertical_compliance(grid, flex)
+    gap0 = _candidates(grid, surface)
+    forces, delta, k_tan, iterations = active_set(lambda cols: compliance[:, cols], gap0, np.zeros(gap0.size), load)
+    forces = forces.reshape(grid.n_cols, grid.n_rows)
+    contact = forces > 0
+    if contact[:, [0, -1]].any():
+        raise RuntimeError(
+            "contact reaches the end of the contact grid; the load is too high for this tire "
+            f"(grid +/- {grid.theta[-1] * grid.radius.max() * 1e3:.0f} mm)"
+        )
+    return SectionStaticState(
+        road=surface,
+        load=load,
+        deflection=float(delta),
+        contact=contact,
+        contact_force=forces,
+        pressure=forces / grid.area(),
+        hub_force=_rim_force(tire, forces),
+        vertical_stiffness=float(k_tan),
+        tasselli=section_tasselli(tire, contact),
+        iterations=iterations,
+        grid=grid,
+        tire=tire.spec,
+    )
+
+
+def section_summary(state: SectionStaticState) -> pd.Series:
+    """Key numbers of a loaded cross-section tire, in the paper's units."""
+    spread = np.sinc(state.grid.dtheta / (2 * np.pi))
+    return pd.Series(
+        {
+            "load (N)": state.load,
+            "deflection (mm)": state.deflection * 1e3,
+            "vertical stiffness, tangent (N/mm)": state.vertical_stiffness / 1e3,
+            "vertical stiffness, secant (N/mm)": state.load / state.deflection / 1e3,
+            "footprint length (mm)": state.footprint_length * 1e3,
+            "footprint width (mm)": state.footprint_width * 1e3,
+            "contact area (cm^2)": state.contact_area * 1e4,
+            "mean contact pressure (MPa)": state.mean_pressure / 1e6,
+            "peak contact pressure (MPa)": state.pressure.max() / 1e6,
+            "contact points": int(state.contact.sum()),
+            "tasselli": state.tasselli.n,
+            "hub force / load - 1 (arc spreading removed)": state.hub_force / (state.load * spread) - 1.0,
+        }
+    )
