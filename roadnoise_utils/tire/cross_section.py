@@ -26,7 +26,7 @@ from typing import Any
 import numpy as np
 
 from . import laminate
-from .spec import Compound, Operating, Tassellation, _build_section, _p
+from .spec import Compound, Operating, Tassellation, _build_section, _p, check_model
 
 
 @dataclass(frozen=True)
@@ -225,6 +225,7 @@ def from_dict(data: dict[str, Any], source: str = "<dict>") -> CrossSectionSpec:
     name = data["tire"].get("name")
     if not isinstance(name, str) or not name:
         raise ValueError(f"{source}: [tire] name must be a non-empty string")
+    check_model(data, source, "cross-section")
     sections = {key: _build_section(cls, data[key], key, source) for key, cls in SECTIONS.items()}
     compounds = {
         key: _build_section(Compound, value, f"compounds.{key}", source)

@@ -289,6 +289,11 @@ def build_fet(spec: TireSpec) -> FETModel:
         Sparse mass and stiffness matrices (all DOF, hub last), compound laws and tread
         stiffness per node, about the inflated, unloaded state.
     """
+    if not isinstance(spec, TireSpec):
+        raise TypeError(
+            f"build_fet builds the ring model from a ring tire file; got {type(spec).__name__} "
+            "(a cross-section tire: roadnoise_utils.tire.section_static.build_section_tire)"
+        )
     mesh = build_mesh(spec)
     ns = mesh.n_strips
     p = spec.operating.inflation_pressure

@@ -5,8 +5,15 @@ polynomials in the harmonic number ``n`` (:mod:`.waveguide`), solves the inflati
 beads clamped, linear) for the pre-stress and returns a :class:`HarmonicOperators` from which
 any harmonic's stiffness and mass cost a few sparse additions:
 
-.. math:: K_n(\\omega) = w_n\\Big[\\sum_c g_c(\\omega)\\,K_c(n) + K_\\sigma(n) - p\\,H(n)\\Big],
+.. math:: K_n(\\omega) = w_n\\Big[\\sum_c g_c(\\omega)\\,\\big(K_c(n) + K_{\\sigma,c}(n)\\big) - p\\,H(n)\\Big],
           \\qquad M_n = w_n M.
+
+Damping comes from the layers that strain (DESIGN section 2): each layer's law scales its
+elastic stiffness ``K_c`` *and* the geometric stiffness of the pre-stress it carries,
+``K_sigma,c``. The pre-stress is carried by the cord plies (the carcass on the sidewalls, the belt
+at the crown); as they rotate under the pressure their rubber matrix shears between the cords,
+which is the loss the ring model gives its pneumatic foundation. Only the follower-pressure
+load stiffness ``-p H`` (the work of the gas) is lossless.
 
 The inflation pre-stress comes from a *linear* solve of the layered solid under the pressure,
 about the given (inflated) geometry: it carries the membrane forces of the cord layers (the
@@ -44,8 +51,8 @@ class HarmonicOperators:
     mesh : SectionMesh
     elastic : dict of str to tuple of 3 csr_matrix
         ``(K0, K1, K2)`` of each compound at its static modulus (N/m per radian).
-    geometric : tuple of 3 csr_matrix
-        Geometric stiffness of the inflation pre-stress, same form.
+    geometric : dict of str to tuple of 3 csr_matrix
+        Geometric stiffness of the inflation pre-stress carried by each compound's layers, same form.
     pressure : tuple of 2 csr_matrix
         Load stiffness of the follower pressure, ``-p (H0 + n H1)``.
     mass : csr_matrix
@@ -63,7 +70,7 @@ class HarmonicOperators:
 
     mesh: SectionMesh
     elastic: dict[str, tuple[sp.csr_matrix, sp.csr_matrix, sp.csr_matrix]]
-    geometric: tuple[sp.csr_matrix, sp.csr_matrix, sp.csr_matrix]
+    geometric: dict[str, tuple[sp.csr_matrix, sp.csr_matrix, sp.csr_matrix]]
     pressure: tuple[sp.csr_matrix, sp.csr_matrix]
     mass: sp.csr_matrix
     fixed: np.ndarray
@@ -82,15 +89,19 @@ class HarmonicOperators:
         return np.setdiff1d(np.arange(self.n_dof), self.fixed)
 
     def gas(self, n: int) -> sp.csr_matrix:
-        """Lossless stiffness of the gas pre-stress at harmonic ``n`` (without ``w_n``)."""
-        k0, k1, k2 = self.geometric
+        """Lossless stiffness at harmonic ``n``: the follower-pressure load stiffness (without ``w_n``)."""
         p0, p1 = self.pressure
-        return (k0 + n * k1 + n * n * k2 + p0 + n * p1).tocsr()
+        return (p0 + n * p1).tocsr()
 
     def compound(self, name: str, n: int) -> sp.csr_matrix:
-        """Static stiffness of one compound at harmonic ``n`` (without ``w_n``)."""
+        """Static stiffness of one compound's layers at harmonic ``n``: elastic and pre-stress (without ``w_n``)."""
         k0, k1, k2 = self.elastic[name]
-        return (k0 + n * k1 + n * n * k2).tocsr()
+        g0, g1, g2 = self.geometric[name]
+        return (k0 + g0 + n * (k1 + g1) + n * n * (k2 + g2)).tocsr()
+
+    def prestress(self, n: int) -> sp.csr_matrix:
+        """Geometric stiffness of the whole inflation pre-stress at harmonic ``n`` (without ``w_n``)."""
+        return sum(((g0 + n * g1 + n * n * g2) for g0, g1, g2 in self.geometric.values()), sp.csr_matrix(self.mass.shape)).tocsr()
 
     def stiffness(self, n: int, omega: float = 0.0, storage_only: bool = False) -> sp.csr_matrix:
         """``K_n(omega)`` (N/m), all DOF, weight ``w_n`` included; complex unless ``storage_only``."""
@@ -164,7 +175,10 @@ def harmonic_operators(
         inflation, stress = _inflate(elastic, dv, fixed, bc, dofs, pts, inflation_pressure, n_dof)
     else:
         inflation, stress = np.zeros(n_dof), np.asarray(prestress, float)
-    geometric = _geometric_stiffness(geo, stress, pts.element, dofs, n_dof)
+    geometric = {}
+    for index, name in enumerate(pts.compounds):
+        sel = pts.compound == index
+        geometric[name] = _geometric_stiffness(_subset(geo, sel), stress[sel], pts.element[sel], dofs, n_dof)
     p = inflation_pressure
     return HarmonicOperators(
         mesh=mesh,
@@ -178,6 +192,11 @@ def harmonic_operators(
         inflation=inflation,
         stress=stress,
     )
+
+
+def _subset(geo, sel):
+    """The point geometry of a subset of the quadrature points."""
+    return type(geo)(**{name: getattr(geo, name)[sel] for name in ("shape", "d_r", "d_y", "radius", "volume")})
 
 
 def _inflate(elastic, dv, fixed, bc, dofs, pts, pressure, n_dof):

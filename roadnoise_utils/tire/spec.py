@@ -174,6 +174,9 @@ class TireSpec:
     compounds: dict[str, Compound]
     source: str = field(default="", metadata={"identity": False})  # where it was read from: not part of its identity
 
+    #: The tire model this file builds (``[tire] model``).
+    model = "ring"
+
     @property
     def lateral_tension(self) -> float:
         """Meridional membrane tension across the crown (N/m).
@@ -216,7 +219,7 @@ class TireSpec:
 
 def to_dict(spec: TireSpec) -> dict[str, Any]:
     """The spec as nested plain data (the TOML layout); the basis of its cache key."""
-    out: dict[str, Any] = {"tire": {"name": spec.name}}
+    out: dict[str, Any] = {"tire": {"name": spec.name, "model": "ring"}}
     for f in dataclasses.fields(spec):
         value = getattr(spec, f.name)
         if dataclasses.is_dataclass(value):
@@ -308,6 +311,7 @@ def from_dict(data: dict[str, Any], source: str = "<dict>") -> TireSpec:
     name = data["tire"].get("name") if isinstance(data["tire"], dict) else None
     if not isinstance(name, str) or not name:
         raise ValueError(f"{source}: [tire] name must be a non-empty string")
+    check_model(data, source, "ring")
     sections = {key: _build_section(cls, data[key], key, source) for key, cls in SECTIONS.items()}
     compounds_data = data["compounds"]
     if not isinstance(compounds_data, dict):
@@ -324,13 +328,28 @@ def from_dict(data: dict[str, Any], source: str = "<dict>") -> TireSpec:
     return spec
 
 
+#: Tire models a tire file can select with ``[tire] model``.
+MODELS = ("ring", "cross-section")
+
+
+def check_model(data: dict[str, Any], source: str, expected: str | None = None) -> str:
+    """The ``[tire] model`` of a tire file, refused unless it is one of :data:`MODELS` (or ``expected``)."""
+    tire = data.get("tire")
+    model = tire.get("model") if isinstance(tire, dict) else None
+    if model not in MODELS:
+        raise ValueError(f"{source}: [tire] model = {model!r}: valid values are {list(MODELS)}")
+    if expected is not None and model != expected:
+        raise ValueError(f"{source}: [tire] model = {model!r} where a {expected!r} tire file is expected")
+    return model
+
+
 def tire_path(name: str | Path) -> Path:
     """Resolve a tire name (``"165_65R14"``) or a path to its TOML file."""
     return data_file(name, "tires", "tire file")
 
 
 def load_tire(name: str | Path) -> TireSpec:
-    """Load and validate a tire definition.
+    """Load and validate a tire definition; ``[tire] model`` selects the tire model.
 
     Parameters
     ----------
@@ -339,8 +358,9 @@ def load_tire(name: str | Path) -> TireSpec:
 
     Returns
     -------
-    TireSpec
-        Validated parameters, SI units.
+    TireSpec or CrossSectionSpec
+        Validated parameters, SI units: a :class:`TireSpec` for ``model = "ring"``, a
+        :class:`.cross_section.CrossSectionSpec` for ``model = "cross-section"``.
 
     Raises
     ------
@@ -349,7 +369,12 @@ def load_tire(name: str | Path) -> TireSpec:
         names the field, its value and the valid range.
     """
     path = tire_path(name)
-    return from_dict(read_toml(path), source=path.name)
+    data = read_toml(path)
+    if check_model(data, path.name) == "cross-section":
+        from .cross_section import from_dict as cross_section_from_dict
+
+        return cross_section_from_dict(data, source=path.name)
+    return from_dict(data, source=path.name)
 
 
 def tire_table(spec: TireSpec) -> pd.DataFrame:

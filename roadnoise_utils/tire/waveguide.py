@@ -304,3 +304,22 @@ def pressure_operators(
 def harmonic_weight(n: int) -> float:
     """Circumferential integral of ``cos^2 n theta`` (or ``sin^2``; both rows at ``n = 0``)."""
     return 2.0 * np.pi if n == 0 else np.pi
+
+
+def face_springs(node_r: np.ndarray, node_y: np.ndarray, lines: np.ndarray, k_r: float, k_t: float, n_dof: int) -> sp.csr_matrix:
+    """Distributed springs to ground on a face (N/m^3 radial ``k_r`` and tangential ``k_t``), per radian.
+
+    The same for every harmonic (times ``w_n``); used to put a ring on an elastic foundation for
+    the closed-form check of DESIGN section 2.
+    """
+    s = surface_points(lines)
+    r = (s.shape * node_r[s.nodes]).sum(1)
+    ds = np.hypot((s.d_xi * node_r[s.nodes]).sum(1), (s.d_xi * node_y[s.nodes]).sum(1))
+    w = s.weight * ds * r
+    blocks = np.zeros((r.size, 9, 9))
+    for c, k in ((R, k_r), (T, k_t)):
+        blocks[:, c::3, c::3] = k * w[:, None, None] * s.shape[:, :, None] * s.shape[:, None, :]
+    dofs = (DOF_PER_NODE * s.nodes[:, :, None] + np.arange(3)).reshape(-1, 9)
+    rows = np.broadcast_to(dofs[:, :, None], blocks.shape)
+    cols = np.broadcast_to(dofs[:, None, :], blocks.shape)
+    return sp.csr_matrix((blocks.ravel(), (rows.ravel(), cols.ravel())), shape=(n_dof, n_dof))

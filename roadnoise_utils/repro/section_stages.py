@@ -1,0 +1,90 @@
+"""Cached stages of the cross-section tire (``[tire] model = "cross-section"``).
+
+==========================  ==============================================================
+stage                       caches
+==========================  ==============================================================
+:func:`section_static`      :func:`roadnoise_utils.tire.section_static.solve_section_static`
+:func:`section_footprint`   :func:`roadnoise_utils.response.section_footprint.footprint_frf`
+                            (default 0-400 Hz every 1 Hz)
+==========================  ==============================================================
+
+:func:`section_tire` (mesh, harmonic matrices and inflation: about half a second) is not cached.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from ..response import section_footprint as footprint
+from ..response.section_footprint import FootprintFRF
+from ..tire import section_static as static_module
+from ..tire import spec
+from ..tire.cross_section import CrossSectionSpec
+from ..tire.section_static import SectionStaticState, SectionTire, build_section_tire
+from ..tire.static import make_road
+from .cache import cached
+from .stages import DEFAULT_FREQS
+
+SectionTireLike = str | Path | CrossSectionSpec
+
+
+def load_section_tire(tire: SectionTireLike) -> CrossSectionSpec:
+    """A :class:`CrossSectionSpec` from a name or path, or the spec itself; refuses a ring tire file."""
+    loaded = tire if isinstance(tire, CrossSectionSpec) else spec.load_tire(tire)
+    if not isinstance(loaded, CrossSectionSpec):
+        raise ValueError(
+            f"tire {tire!r} is a {loaded.model!r} tire file; the cross-section stages need [tire] model = "
+            '"cross-section" (e.g. "165_65R14_cross_section")'
+        )
+    return loaded
+
+
+def section_tire(tire: SectionTireLike) -> SectionTire:
+    """The built cross-section tire (fast; not cached)."""
+    return build_section_tire(load_section_tire(tire))
+
+
+def _inputs(tire: SectionTireLike, road: str, load: float | None, drum_radius: float | None) -> dict:
+    tire_spec = load_section_tire(tire)
+    surface = make_road(road, drum_radius)
+    return {
+        "tire": tire_spec,
+        "road": surface.kind,
+        "drum_radius": surface.drum_radius,
+        "load": tire_spec.operating.vertical_load if load is None else float(load),
+    }
+
+
+def section_static(
+    tire: SectionTireLike, road: str = "flat", load: float | None = None, drum_radius: float | None = None
+) -> SectionStaticState:
+    """Cached :func:`.tire.section_static.solve_section_static`; ``drum_radius`` (m) required for a drum."""
+    inputs = _inputs(tire, road, load, drum_radius)
+
+    def compute() -> SectionStaticState:
+        drum = inputs["drum_radius"] if inputs["road"] == "drum" else None
+        built = build_section_tire(inputs["tire"])
+        return static_module.solve_section_static(built, inputs["road"], inputs["load"], drum)
+
+    return cached(section_static, inputs, compute, runs=(static_module.solve_section_static,))
+
+
+def section_footprint(
+    tire: SectionTireLike,
+    road: str = "flat",
+    freqs: np.ndarray | None = None,
+    load: float | None = None,
+    drum_radius: float | None = None,
+    progress: bool = False,
+) -> FootprintFRF:
+    """Cached :func:`.response.section_footprint.footprint_frf` (default 0-400 Hz every 1 Hz)."""
+    inputs = _inputs(tire, road, load, drum_radius)
+    freqs = DEFAULT_FREQS if freqs is None else np.asarray(freqs, dtype=float)
+    state = section_static(tire, road, load, drum_radius)
+
+    def compute() -> FootprintFRF:
+        return footprint.footprint_frf(build_section_tire(inputs["tire"]), state, freqs, progress=progress)
+
+    return cached(section_footprint, {**inputs, "freqs": freqs}, compute, runs=(footprint.footprint_frf,))

@@ -1,0 +1,289 @@
+"""Footprint dynamics of the cross-section tire: contact receptance and hub-force transfer.
+
+With the tire loaded (:func:`.tire.section_static.solve_section_static`), the contact points
+follow the road vertically (bilateral, frictionless: the linearisation about the loaded state,
+as the paper's FE model with the contact set frozen). At each frequency:
+
+1. the receptance between the contact points, :math:`C(\\omega)`, from the harmonic sum with
+   the frequency-dependent moduli (:mod:`.tire.section_contact`); harmonics up to the last one
+   with a mode below ``cutoff`` are reduced with their modes at every frequency, the
+   quasi-static rest is computed on a grid of harmonics and frequencies and interpolated
+   (cubic in both, smooth there: no resonance);
+2. the hub-force transfer of a vertical force at each point, ``t(omega)``, from the exact
+   ``n = 1`` rim reaction (:func:`.tire.section_dynamics.rim_transfer`);
+3. the hub force per unit road displacement at each point,
+   :math:`h(\\omega) = C(\\omega)^{-1} t(\\omega)`: a road displacement field ``d`` gives the
+   hub force :math:`h^T d`; every point moving together gives :math:`H_{tot} = \\sum h`, the
+   points of tassello ``i`` together give :math:`H_i`.
+
+With the points held, a rim motion meets the dynamic stiffness
+:math:`G_H = D_{rim} - t^T C^{-1} t` (the moving hub's tire, paper Eq. 5-7).
+"""
+
+from __future__ import annotations
+
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass
+from itertools import repeat
+
+import numpy as np
+import scipy.linalg as sla
+from scipy.interpolate import CubicSpline
+from threadpoolctl import threadpool_limits
+
+from ..tire.section_contact import patch_factor
+from ..tire.section_dynamics import harmonic_modes, reduce_harmonic, rim_transfer
+from ..tire.section_static import SectionStaticState, SectionTire
+from ..tire.tasselli import Tasselli
+
+#: Frequencies per block of the evaluation (memory: block x offsets x (2 columns)^2 complex).
+BLOCK = 16
+
+
+@dataclass(frozen=True, eq=False)
+class FootprintFRF:
+    """Hub-force transfer of the footprint points of a loaded cross-section tire.
+
+    Attributes
+    ----------
+    freqs : ndarray (n_f,)
+        Hz.
+    hub : ndarray (n_f, P) complex
+        Hub force per unit vertical road displacement at each contact point (N/m), points in
+        the order of ``static.points``.
+    transfer : ndarray (n_f, P) complex
+        Hub force per unit vertical force at each contact point (-).
+    free_rim : ndarray (n_f,) complex
+        Dynamic stiffness of the rim's vertical motion with the tread free (N/m).
+    static : SectionStaticState
+    n_dynamic : int
+        Harmonics ``0..n_dynamic`` carried their modes.
+    """
+
+    freqs: np.ndarray
+    hub: np.ndarray
+    transfer: np.ndarray
+    free_rim: np.ndarray
+    static: SectionStaticState
+    n_dynamic: int
+
+    @property
+    def H_tot(self) -> np.ndarray:
+        """Hub force per unit displacement of the whole footprint (N/m), (n_f,)."""
+        return self.hub.sum(axis=1)
+
+    def H_tasselli(self, tasselli: Tasselli | None = None) -> np.ndarray:
+        """Hub force per unit displacement of each tassello (N/m), (n_f, n_tasselli)."""
+        t = self.static.tasselli if tasselli is None else tasselli
+        if t.node_x.size != self.hub.shape[1]:
+            raise ValueError("tasselli must partition this footprint's contact points (static.tasselli)")
+        return self.hub @ t.membership().T
+
+    @property
+    def G_H(self) -> np.ndarray:
+        """Dynamic stiffness at the rim with the footprint points held (N/m), (n_f,)."""
+        return self.free_rim - np.einsum("fp,fp->f", self.transfer, self.hub)
+
+
+def dynamic_harmonics(tire: SectionTire, f_max: float, cutoff: float) -> int:
+    """The last harmonic with a mode below ``cutoff`` (Hz), searching upwards from ``n = 2``."""
+    omega = np.pi * f_max
+    n = 2
+    while n < tire.harmonics and harmonic_modes(tire.ops, n, omega, cutoff, max_modes=4).shape[1]:
+        n += 1
+    return n - 1
+
+
+def _sample_harmonics(first: int, last: int, count: int = 24) -> np.ndarray:
+    """Harmonics sampled densely near ``first`` and sparsely towards ``last`` (interpolation nodes)."""
+    return np.unique(np.round(np.geomspace(first, last, count)).astype(int))
+
+
+def _offsets(static: SectionStaticState) -> np.ndarray:
+    _, rows = static.points
+    span = rows.max() - rows.min()
+    return static.grid.dtheta * np.arange(-span, span + 1)
+
+
+def _trig(n: np.ndarray, offsets: np.ndarray, dtheta: float, basis: np.ndarray | None = None):
+    """``cos`` and ``sin`` weights (n_off, n) of the harmonic sums, patch factor included.
+
+    With ``basis`` (n, n_samples) the weights act on sampled harmonics, the receptance of
+    harmonic ``n`` being ``basis[n] @ samples`` (interpolation in ``n``).
+    """
+    weight = patch_factor(n, dtheta)
+    cos = np.cos(np.outer(offsets, n)) * weight
+    sin = np.sin(np.outer(offsets, n)) * weight
+    if basis is not None:
+        cos, sin = cos @ basis, sin @ basis
+    return cos, sin
+
+
+def _angular(flat: np.ndarray, cos: np.ndarray, sin: np.ndarray, c: int) -> np.ndarray:
+    """Harmonic sums of receptances ``flat`` (n_n, ..., 4 c^2) at the offsets of ``cos, sin``: (..., n_off, 2c, 2c).
+
+    ``cos`` sums for the ``rr`` and ``tt`` blocks, ``sin`` sums for ``rt`` (negated) and ``tr``
+    (:mod:`.tire.section_contact`).
+    """
+    blocks = flat.reshape(flat.shape[:-1] + (2, c, 2, c))
+    diagonal = np.stack([blocks[..., 0, :, 0, :], blocks[..., 1, :, 1, :]], axis=-3)
+    mixed = np.stack([-blocks[..., 0, :, 1, :], blocks[..., 1, :, 0, :]], axis=-3)
+    even = np.moveaxis(np.tensordot(cos, diagonal, axes=(1, 0)), 0, -4)  # (..., n_off, 2, c, c)
+    odd = np.moveaxis(np.tensordot(sin, mixed, axes=(1, 0)), 0, -4)
+    out = np.empty(even.shape[:-3] + (2 * c, 2 * c), complex)
+    out[..., :c, :c], out[..., c:, c:] = even[..., 0, :, :], even[..., 1, :, :]
+    out[..., :c, c:], out[..., c:, :c] = odd[..., 0, :, :], odd[..., 1, :, :]
+    return out
+
+
+def _mirror_pairs(static: SectionStaticState) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Fore-aft mirror of the contact points: (points with theta >= 0, index of each point's
+    representative among them, the mirror partner of each representative or -1 on theta = 0).
+
+    Raises ValueError when the contact set is not mirror-symmetric.
+    """
+    col, row = static.points
+    rows = static.grid.n_rows
+    centre = (rows - 1) // 2
+    lookup = {(c, r): k for k, (c, r) in enumerate(zip(col, row))}
+    mirror = np.array([lookup.get((c, rows - 1 - r), -1) for c, r in zip(col, row)])
+    if np.any(mirror < 0):
+        raise ValueError("the contact set is not fore-aft symmetric")
+    keep = np.nonzero(row >= centre)[0]
+    representative = np.empty(col.size, int)
+    representative[keep] = np.arange(keep.size)
+    behind = row < centre
+    representative[behind] = representative[mirror[behind]]
+    partner = np.where(row[keep] > centre, mirror[keep], -1)
+    return keep, representative, partner
+
+
+def footprint_frf(
+    tire: SectionTire,
+    static: SectionStaticState,
+    freqs: np.ndarray,
+    cutoff_factor: float = 2.0,
+    interpolation_step: float = 25.0,
+    progress: bool = False,
+) -> FootprintFRF:
+    """The footprint's hub-force transfer of a loaded cross-section tire (see the module notes).
+
+    Parameters
+    ----------
+    tire, static : SectionTire, SectionStaticState
+    freqs : ndarray
+        Frequencies (Hz), ascending, >= 0.
+    cutoff_factor : float
+        Modes up to ``cutoff_factor * max(freqs)`` carry the inertia.
+    interpolation_step : float
+        Frequency step (Hz) of the quasi-static harmonics' interpolation grid.
+    """
+    freqs = np.asarray(freqs, float)
+    f_max = float(freqs.max())
+    grid, ops = tire.grid, tire.ops
+    c = grid.n_cols
+    cutoff = cutoff_factor * f_max
+    with threadpool_limits(1):
+        n_dyn = dynamic_harmonics(tire, f_max, cutoff)
+        dynamic = [reduce_harmonic(ops, grid.dofs, n, f_max, cutoff) for n in range(n_dyn + 1)]
+        offsets = _offsets(static)
+        n_high, basis, high = _high_harmonics(tire, n_dyn, f_max, interpolation_step)
+        rim = rim_transfer(ops, grid.dofs, 2 * np.pi * freqs)
+    col, row = static.points
+    th = grid.theta[row]
+    spread = np.sinc(grid.dtheta / (2 * np.pi))
+    transfer = (-(np.cos(th) ** 2) * rim.contact[:, col] + np.sin(th) ** 2 * rim.contact[:, c + col]) * spread
+    keep, representative, partner = _mirror_pairs(static)
+    centre = (offsets.size - 1) // 2
+    direct = row[keep][:, None] - row[keep][None, :] + centre
+    paired = partner >= 0
+    mirrored = row[keep][:, None] - row[partner[paired]][None, :] + centre
+    hub = np.empty((freqs.size, col.size), complex)
+    cos_dyn, sin_dyn = _trig(np.arange(n_dyn + 1), offsets, grid.dtheta)
+    cos_high, sin_high = _trig(n_high, offsets, grid.dtheta, basis)
+    cos, sin = np.hstack([cos_dyn, cos_high]), np.hstack([sin_dyn, sin_high])
+    blocks = range(0, freqs.size, BLOCK)
+    if progress:
+        from tqdm.auto import tqdm
+
+        blocks = tqdm(blocks, desc="footprint FRF")
+    projection = _Projection(col[keep], th[keep], col[partner[paired]], th[partner[paired]], direct, mirrored, c)
+    flat = np.empty((cos.shape[1], BLOCK, 4 * c * c), complex)
+
+    def fill(n: int, omegas: np.ndarray) -> None:
+        flat[n, : omegas.size] = dynamic[n].receptance(ops.laws, omegas).reshape(omegas.size, -1)
+
+    workers = ThreadPoolExecutor(max_workers=2)  # LAPACK releases the GIL: two harmonics at a time
+    for start in blocks:
+        part = slice(start, min(start + BLOCK, freqs.size))
+        omegas = 2 * np.pi * freqs[part]
+        with threadpool_limits(1):
+            list(workers.map(fill, range(n_dyn + 1), repeat(omegas)))
+        flat[n_dyn + 1 :, : omegas.size] = high(freqs[part])
+        sums = _angular(flat[:, : omegas.size], cos, sin, c)
+        for k, f_index in enumerate(range(part.start, part.stop)):
+            # an even displacement field: h(j, -a) = h(j, a); the mirrored column adds to its partner
+            comp = projection.even(sums[k], paired)
+            hub[f_index] = sla.solve(comp, transfer[f_index, keep])[representative]
+    workers.shutdown()
+    return FootprintFRF(
+        freqs=freqs, hub=hub, transfer=transfer, free_rim=rim.free_rim, static=static, n_dynamic=n_dyn
+    )
+
+
+class _Projection:
+    """Vertical receptance of the contact points from the (r, theta) angular sums.
+
+    ``u_z = -cos(a) u_r + sin(a) u_t`` and a vertical force ``F`` loads ``f_r = -cos(b) F``,
+    ``f_t = sin(b) F``. The trigonometric weights do not depend on frequency: built once.
+    """
+
+    def __init__(self, col, theta, mirror_col, mirror_theta, direct, mirrored, c):
+        self.c = c
+        self.direct = (direct, col[:, None], col[None, :])
+        self.mirrored = (mirrored, col[:, None], mirror_col[None, :])
+        self.weights = [self._weights(theta, theta), self._weights(theta, mirror_theta)]
+
+    @staticmethod
+    def _weights(theta_a, theta_b):
+        ca, sa, cb, sb = np.cos(theta_a), np.sin(theta_a), np.cos(theta_b), np.sin(theta_b)
+        return np.outer(ca, cb), -np.outer(ca, sb), -np.outer(sa, cb), np.outer(sa, sb)
+
+    def _block(self, sums, pick, weights):
+        c = self.c
+        out = weights[0] * sums[:, :c, :c][pick]
+        out += weights[1] * sums[:, :c, c:][pick]
+        out += weights[2] * sums[:, c:, :c][pick]
+        out += weights[3] * sums[:, c:, c:][pick]
+        return out
+
+    def even(self, sums: np.ndarray, paired: np.ndarray) -> np.ndarray:
+        """Receptance of an even (fore-aft symmetric) field on the points with theta >= 0."""
+        comp = self._block(sums, self.direct, self.weights[0])
+        comp[:, paired] += self._block(sums, self.mirrored, self.weights[1])
+        return comp
+
+
+def _high_harmonics(tire: SectionTire, n_dyn: int, f_max: float, step: float) -> tuple:
+    """The quasi-static harmonics ``n_dyn + 1 .. N``: sampled in ``n``, splined in frequency.
+
+    Returns the harmonics ``n_all``, the interpolation weights ``basis`` (n_all, n_samples) and a
+    function of frequency (Hz) giving the sampled receptances (n_samples, n_f, 4 c^2).
+    """
+    grid, ops = tire.grid, tire.ops
+    last = tire.harmonics
+    n_all = np.arange(n_dyn + 1, last + 1)
+    if n_all.size == 0:
+        return n_all, np.zeros((0, 0)), lambda f: np.zeros((0, len(f), (2 * grid.n_cols) ** 2), complex)
+    f_grid = np.linspace(0.0, f_max, max(4, int(np.ceil(f_max / step)) + 1))
+    sampled = _sample_harmonics(n_dyn + 1, last)
+    values = np.stack(
+        [
+            reduce_harmonic(ops, grid.dofs, n, f_max, None).receptance(ops.laws, 2 * np.pi * f_grid).reshape(
+                f_grid.size, -1
+            )
+            for n in sampled
+        ]
+    )
+    basis = CubicSpline(sampled, np.eye(sampled.size), axis=0)(n_all) if sampled.size > 1 else np.ones((1, 1))
+    return n_all, basis, CubicSpline(f_grid, values, axis=1)

@@ -1,0 +1,106 @@
+"""The loaded cross-section tire: contact, force balance, reciprocity, footprint FRFs (issue 13: c, d, f)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from roadnoise_utils.repro import section_stages
+from roadnoise_utils.response.section_footprint import footprint_frf
+from roadnoise_utils.tire.section_contact import angular_sums, harmonic_flexibility, vertical_compliance
+from roadnoise_utils.tire.section_dynamics import direct_receptance, reduce_harmonic, ritz_error
+from roadnoise_utils.tire.section_static import section_summary, solve_section_static
+
+NAME = "165_65R14_cross_section"
+
+
+@pytest.fixture(scope="module")
+def tire():
+    return section_stages.section_tire(NAME)
+
+
+@pytest.fixture(scope="module")
+def flat():
+    return section_stages.section_static(NAME, "flat")
+
+
+def test_force_balance_to_round_off(flat):
+    """(f) The rim's n = 1 reaction, computed apart from the contact solve, equals the load."""
+    spread = np.sinc(flat.grid.dtheta / (2 * np.pi))  # vertical resultant of an arc-spread point load
+    assert flat.contact_force.sum() == pytest.approx(flat.load, rel=1e-12)
+    assert flat.hub_force / (flat.load * spread) - 1 == pytest.approx(0.0, abs=1e-9)
+    assert np.all(flat.contact_force >= 0)
+
+
+def test_footprint_is_fore_aft_symmetric_and_inside_the_grid(flat):
+    assert np.array_equal(flat.contact, flat.contact[:, ::-1])
+    np.testing.assert_allclose(flat.contact_force, flat.contact_force[:, ::-1], rtol=1e-6, atol=1e-9 * flat.load)
+    assert not flat.contact[:, [0, -1]].any()
+
+
+def test_drum_shortens_the_footprint(flat):
+    drum = section_stages.section_static(NAME, "drum", drum_radius=1.25)
+    assert drum.footprint_length < flat.footprint_length
+    assert drum.deflection > flat.deflection
+
+
+def test_static_compliance_is_symmetric_and_positive_definite(tire):
+    """(d) Reciprocity of the static Green's functions on the contact grid."""
+    grid = tire.grid
+    flex = harmonic_flexibility(tire.ops, grid.dofs, tire.harmonics)
+    c = vertical_compliance(grid, flex)
+    assert np.abs(c - c.T).max() < 1e-10 * np.abs(c).max()
+    assert np.linalg.eigvalsh(c[:400, :400]).min() > 0
+
+
+@pytest.mark.parametrize("n", [0, 1, 3, 20, 150])
+def test_ritz_reduction_matches_the_direct_solve(tire, n):
+    red = reduce_harmonic(tire.ops, tire.grid.dofs, n, 400.0, 800.0 if n <= 20 else None)
+    for f in (0.0, 80.0, 250.0, 400.0):
+        assert ritz_error(tire.ops, red, tire.grid.dofs, 2 * np.pi * f) < 3e-3
+
+
+@pytest.fixture(scope="module")
+def frf(tire, flat):
+    return footprint_frf(tire, flat, np.array([0.0, 40.0, 80.0, 160.0, 320.0]))
+
+
+def test_static_footprint_frf_is_the_vertical_stiffness(frf, flat):
+    spread = np.sinc(flat.grid.dtheta / (2 * np.pi))
+    # exact but for the quasi-static harmonics' cubic interpolation in n (2e-7 here)
+    assert frf.H_tot[0].real / (flat.vertical_stiffness * spread) - 1 == pytest.approx(0.0, abs=1e-6)
+    assert abs(frf.H_tot[0].imag) < 1e-8 * abs(frf.H_tot[0])
+    # the tasselli partition the points: their FRFs add up to the whole footprint's
+    np.testing.assert_allclose(frf.H_tasselli().sum(axis=1), frf.H_tot, rtol=1e-12)
+
+
+def test_footprint_frf_matches_a_direct_harmonic_sum(tire, flat, frf):
+    """The reduced, interpolated FRF against every harmonic solved directly, contact points all kept (no mirror)."""
+    grid, ops = tire.grid, tire.ops
+    f = 80.0
+    omega = 2 * np.pi * f
+    flex = np.stack([direct_receptance(ops, grid.dofs, n, omega) for n in range(tire.harmonics + 1)])
+    col, row = flat.points
+    offsets = grid.dtheta * np.arange(-(grid.n_rows - 1), grid.n_rows)
+    sums = angular_sums(flex, offsets, grid.dtheta)
+    c = grid.n_cols
+    th = grid.theta[row]
+    k = row[:, None] - row[None, :] + grid.n_rows - 1
+    pick = (k, col[:, None], col[None, :])
+    comp = (
+        np.outer(np.cos(th), np.cos(th)) * sums[:, :c, :c][pick]
+        - np.outer(np.cos(th), np.sin(th)) * sums[:, :c, c:][pick]
+        - np.outer(np.sin(th), np.cos(th)) * sums[:, c:, :c][pick]
+        + np.outer(np.sin(th), np.sin(th)) * sums[:, c:, c:][pick]
+    )
+    assert np.abs(comp - comp.T).max() < 1e-10 * np.abs(comp).max()  # (d) reciprocity at 80 Hz
+    hub = np.linalg.solve(comp, frf.transfer[2])
+    assert abs(frf.H_tot[2] / hub.sum() - 1) < 3e-3
+
+
+def test_harmonic_convergence(tire):
+    """(c) The loaded deflection moves < 0.1 % from 300 to 400 harmonics."""
+    coarse = solve_section_static(section_stages.section_tire(tire.spec.replace(**{"mesh.harmonics": 300})))
+    fine = section_stages.section_static(NAME)
+    assert coarse.deflection / fine.deflection - 1 == pytest.approx(0.0, abs=1e-3)
+    assert section_summary(fine)["tasselli"] >= 60
