@@ -12,24 +12,39 @@ from pathlib import Path
 import pandas as pd
 
 from ..analysis import resonance_peaks
-from ..repro import stages
+from ..repro import section_stages, stages
 from ..repro.paths import data_dir, read_toml
 from ..response.modal_reduction import identify_modes
+from ..tire.cross_section import CrossSectionSpec
 from ..tire.spec import TireSpec
+
+#: Suffix of a cross-section tire file built for the same size as a ring tire file (same targets).
+CROSS_SECTION_SUFFIX = "_cross_section"
 
 
 def calibration_targets(tire: str) -> dict:
-    """Targets of a tire (file stem in ``data/calibration``); empty when the tire has none."""
+    """Targets of a tire (file stem in ``data/calibration``); empty when the tire has none.
+
+    A cross-section tire file ``<size>_cross_section`` shares the targets of ``<size>``: the
+    targets belong to the tire, not to the model of it.
+    """
     path = data_dir() / "calibration" / f"{tire}.toml"
+    if not path.exists() and tire.endswith(CROSS_SECTION_SUFFIX):
+        path = data_dir() / "calibration" / f"{tire.removesuffix(CROSS_SECTION_SUFFIX)}.toml"
     if not path.exists():
         return {}
     return read_toml(path)
 
 
-def calibration_values(tire: str | TireSpec) -> dict[str, float]:
-    """The calibrated quantities of a tire, in the targets' units."""
-    static = stages.solve_static(tire, "flat")
-    frf = stages.frf_visco(tire, "flat")
+def calibration_values(tire: str | TireSpec | CrossSectionSpec) -> dict[str, float]:
+    """The calibrated quantities of a tire (either model), in the targets' units."""
+    spec = stages.load_tire(tire) if not isinstance(tire, CrossSectionSpec) else tire
+    if isinstance(spec, CrossSectionSpec):
+        static = section_stages.section_static(spec, "flat")
+        frf = section_stages.section_footprint(spec, "flat")
+    else:
+        static = stages.solve_static(spec, "flat")
+        frf = stages.frf_visco(spec, "flat")
     peaks, _ = resonance_peaks(frf.freqs, frf.H_tot)
     t = static.tasselli
     return {
@@ -43,7 +58,7 @@ def calibration_values(tire: str | TireSpec) -> dict[str, float]:
     }
 
 
-def calibration_table(tire: str | TireSpec = "165_65R14") -> pd.DataFrame:
+def calibration_table(tire: str | TireSpec | CrossSectionSpec = "165_65R14") -> pd.DataFrame:
     """Table "quantity / target / obtained / unit / ok / source" of the tire's calibration.
 
     A tire without ``data/calibration/<tire>.toml`` gets the obtained values only (target

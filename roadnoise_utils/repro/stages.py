@@ -53,7 +53,11 @@ Tire = str | TireSpec
 
 
 def load_tire(tire: Tire) -> TireSpec:
-    """A :class:`TireSpec` from a name or path (:func:`roadnoise_utils.tire.spec.load_tire`) or the spec itself."""
+    """A :class:`TireSpec` from a name or path (:func:`roadnoise_utils.tire.spec.load_tire`) or the spec itself.
+
+    A cross-section tire file loads as its own spec (``[tire] model``); the ring stages refuse it
+    in :func:`roadnoise_utils.tire.ring_model.build_fet`.
+    """
     return tire if isinstance(tire, TireSpec) else spec.load_tire(tire)
 
 

@@ -226,9 +226,7 @@ def footprint_frf(
             comp = projection.even(sums[k], paired)
             hub[f_index] = sla.solve(comp, transfer[f_index, keep])[representative]
     workers.shutdown()
-    return FootprintFRF(
-        freqs=freqs, hub=hub, transfer=transfer, free_rim=rim.free_rim, static=static, n_dynamic=n_dyn
-    )
+    return FootprintFRF(freqs=freqs, hub=hub, transfer=transfer, free_rim=rim.free_rim, static=static, n_dynamic=n_dyn)
 
 
 class _Projection:
@@ -279,9 +277,9 @@ def _high_harmonics(tire: SectionTire, n_dyn: int, f_max: float, step: float) ->
     sampled = _sample_harmonics(n_dyn + 1, last)
     values = np.stack(
         [
-            reduce_harmonic(ops, grid.dofs, n, f_max, None).receptance(ops.laws, 2 * np.pi * f_grid).reshape(
-                f_grid.size, -1
-            )
+            reduce_harmonic(ops, grid.dofs, n, f_max, None)
+            .receptance(ops.laws, 2 * np.pi * f_grid)
+            .reshape(f_grid.size, -1)
             for n in sampled
         ]
     )

@@ -117,7 +117,9 @@ def reduce_harmonic(
     rhs = np.zeros((free.size, dofs.size))
     rhs[position, np.arange(dofs.size)] = 1.0
     w_max = 2 * np.pi * f_max
-    vectors = [spla.splu(ops.stiffness(n, w, storage_only=True)[free][:, free].tocsc()).solve(rhs) for w in (0.0, w_max)]
+    vectors = [
+        spla.splu(ops.stiffness(n, w, storage_only=True)[free][:, free].tocsc()).solve(rhs) for w in (0.0, w_max)
+    ]
     n_modes = 0
     if cutoff is not None:
         phi = harmonic_modes(ops, n, 0.5 * w_max, cutoff)

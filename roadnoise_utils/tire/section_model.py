@@ -101,7 +101,9 @@ class HarmonicOperators:
 
     def prestress(self, n: int) -> sp.csr_matrix:
         """Geometric stiffness of the whole inflation pre-stress at harmonic ``n`` (without ``w_n``)."""
-        return sum(((g0 + n * g1 + n * n * g2) for g0, g1, g2 in self.geometric.values()), sp.csr_matrix(self.mass.shape)).tocsr()
+        return sum(
+            ((g0 + n * g1 + n * n * g2) for g0, g1, g2 in self.geometric.values()), sp.csr_matrix(self.mass.shape)
+        ).tocsr()
 
     def stiffness(self, n: int, omega: float = 0.0, storage_only: bool = False) -> sp.csr_matrix:
         """``K_n(omega)`` (N/m), all DOF, weight ``w_n`` included; complex unless ``storage_only``."""

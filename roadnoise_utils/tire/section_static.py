@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
+from .. import guards
 from .cross_section import CrossSectionSpec
 from .section_contact import ContactGrid, contact_grid, harmonic_flexibility, vertical_compliance
 from .section_dynamics import rim_transfer
@@ -102,6 +103,17 @@ class SectionStaticState:
         return np.nonzero(self.contact)
 
 
+def check_contact_memory(grid: ContactGrid, harmonics: int) -> None:
+    """Refuse a contact grid whose dense compliance would exceed the memory limit, before any solve.
+
+    The vertical compliance of the ``P`` candidate points is dense (P^2), built from four
+    (r, theta) blocks of the same size; the harmonic flexibilities hold (N + 1) (2 n_cols)^2.
+    """
+    points = grid.n_cols * grid.n_rows
+    n_bytes = 8.0 * (6 * points**2 + (harmonics + 1) * (2 * grid.n_cols) ** 2)
+    guards.check_memory(n_bytes, f"the contact compliance of {points} points", "[mesh] contact_spacing")
+
+
 def _candidates(grid: ContactGrid, road: RoadSurface) -> np.ndarray:
     x, z = grid.xz()
     top = z.min()
@@ -156,6 +168,7 @@ def solve_section_static(
     surface = make_road(road, drum_radius)
     load = tire.spec.operating.vertical_load if load is None else check_load(load)
     grid = tire.grid
+    check_contact_memory(grid, tire.harmonics)
     flex = harmonic_flexibility(tire.ops, grid.dofs, tire.harmonics)
     compliance = vertical_compliance(grid, flex)
     gap0 = _candidates(grid, surface)

@@ -306,7 +306,9 @@ def harmonic_weight(n: int) -> float:
     return 2.0 * np.pi if n == 0 else np.pi
 
 
-def face_springs(node_r: np.ndarray, node_y: np.ndarray, lines: np.ndarray, k_r: float, k_t: float, n_dof: int) -> sp.csr_matrix:
+def face_springs(
+    node_r: np.ndarray, node_y: np.ndarray, lines: np.ndarray, k_r: float, k_t: float, n_dof: int
+) -> sp.csr_matrix:
     """Distributed springs to ground on a face (N/m^3 radial ``k_r`` and tangential ``k_t``), per radian.
 
     The same for every harmonic (times ``w_n``); used to put a ring on an elastic foundation for

@@ -51,7 +51,9 @@ def test_thin_ring_on_foundation_matches_the_closed_form():
     # in-plane ring: u_y held (the closed form has no lateral motion)
     ops = harmonic_operators(mesh, LAW, pressure, fixed=np.arange(2, mesh.n_dof, 3), prestress=stress)
     springs = face_springs(mesh.r, mesh.y, mesh.face_lines(0), k_r / width, k_t / width, mesh.n_dof)
-    ring = RingParameters(radius, e * width * h**3 / 12, tension, k_r * radius / inner, k_t * radius / inner, rho * width * h)
+    ring = RingParameters(
+        radius, e * width * h**3 / 12, tension, k_r * radius / inner, k_t * radius / inner, rho * width * h
+    )
     ours = np.array([_eig(ops, n, springs)[0] for n in range(1, 7)])
     closed = ring_frequencies(np.arange(1, 7), ring)
     assert np.max(np.abs(ours / closed - 1)) < 0.01
@@ -60,7 +62,9 @@ def test_thin_ring_on_foundation_matches_the_closed_form():
 def test_free_thin_ring_bending_frequencies():
     """(a) Without tension or foundation the flexural modes n = 2..6 agree to 0.1 %."""
     mesh = _band()
-    ops = harmonic_operators(mesh, LAW, 0.0, fixed=np.arange(2, mesh.n_dof, 3), prestress=np.zeros((mesh.points.element.size, 6)))
+    ops = harmonic_operators(
+        mesh, LAW, 0.0, fixed=np.arange(2, mesh.n_dof, 3), prestress=np.zeros((mesh.points.element.size, 6))
+    )
     ring = RingParameters(0.3, 2e9 * 0.1 * 0.002**3 / 12, 0.0, 0.0, 0.0, 1200.0 * 0.1 * 0.002)
     for n in range(2, 7):
         assert _eig(ops, n)[0] == pytest.approx(ring_frequencies(n, ring), rel=1e-3)
@@ -93,6 +97,7 @@ def test_pressure_volume_matches_the_exact_deformed_volume():
         a = np.zeros(mesh.n_dof)
         a[0::3], a[1::3] = a_r, a_t
         ours = harmonic_weight(n) * 0.5 * a @ ((h0 + n * h1) @ a)
+
         # exact area inside the curve r = inner + u_r, tangential u_t, second order in the amplitude
         def area(eps):
             ur, ut = eps * a_r * np.cos(n * theta), eps * a_t * np.sin(n * theta)
@@ -176,7 +181,9 @@ def _three_d_operators(mesh, stress, n_theta):
     n = mesh.n_dof
 
     def assemble(a, b, middle):
-        blocks = np.einsum("qia,qij,qjb->qab", a.reshape(q, -1, 27), middle, b.reshape(q, -1, 27)) * g.volume[:, None, None]
+        blocks = (
+            np.einsum("qia,qij,qjb->qab", a.reshape(q, -1, 27), middle, b.reshape(q, -1, 27)) * g.volume[:, None, None]
+        )
         out = np.zeros((n, n))
         np.add.at(out, (dofs[:, :, None], dofs[:, None, :]), blocks)
         return out
