@@ -99,7 +99,7 @@ def test_pressure_volume_matches_the_exact_deformed_volume():
         ours = harmonic_weight(n) * 0.5 * a @ ((h0 + n * h1) @ a)
 
         # exact area inside the curve r = inner + u_r, tangential u_t, second order in the amplitude
-        def area(eps):
+        def area(eps, n=n, a_r=a_r, a_t=a_t):
             ur, ut = eps * a_r * np.cos(n * theta), eps * a_t * np.sin(n * theta)
             x = (inner + ur) * np.cos(theta) - ut * np.sin(theta)
             z = (inner + ur) * np.sin(theta) + ut * np.cos(theta)
