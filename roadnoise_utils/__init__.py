@@ -30,7 +30,7 @@ The package, one folder per stage, data flowing one way:
 
 from . import analysis, experiments, figures, guards, response, rm, road, tire, vehicle
 from .experiments.paper_defaults import cleat_input, solve_static
-from .repro import cache, claims, collection, stages
+from .repro import cache, claims, collection, section_stages, stages
 from .repro.style import set_style
 from .response.frf import FRFResult, frf_visco
 from .response.modal_reduction import ModalReduction, identify_modes, modal_reduction
@@ -87,6 +87,7 @@ __all__ = [
     "set_style",
     "simulate",
     "solve_static",
+    "section_stages",
     "stages",
     "textures",
     "tire",

@@ -15,7 +15,7 @@ experiment                     what it runs                                     
 paper's value); the numerics below them take explicit arguments and read no TOML.
 """
 
-from . import calibration, cleat, conditions, corner, moving_hub, one_sided_cleat, paper_defaults, road
+from . import calibration, cleat, conditions, corner, cross_section, moving_hub, one_sided_cleat, paper_defaults, road
 from .calibration import calibration_table
 from .cleat import CleatConditions, CleatRun, CleatTest, cleat_conditions, cleat_test
 from .corner import CornerSetup, QuarterCarTest, corner_setup, quarter_car
@@ -32,6 +32,7 @@ from .one_sided_cleat import (
 from .road import RoadTest, RoadTestConditions, road_test, road_test_conditions
 
 __all__ = [
+    "cross_section",
     "CleatConditions",
     "CleatRun",
     "CleatTest",

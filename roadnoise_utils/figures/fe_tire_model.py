@@ -100,14 +100,14 @@ def plot_footprint(static: StaticState, ax: plt.Axes | None = None, numbers: str
     if ax is None:
         _, ax = plt.subplots(figsize=(6, 5))
     t = static.tasselli
-    p = static.pressure[t.node_strip, t.node_index]
+    p = static.node_pressure
     vmax = p.max() / 1e6
-    for xs, ys, dxm, dxp, pv in zip(t.node_x, t.node_y, t.node_dx_minus, t.node_dx_plus, p):
+    for xs, ys, dxm, dxp, w, pv in zip(t.node_x, t.node_y, t.node_dx_minus, t.node_dx_plus, t.widths, p):
         ax.add_patch(
             Rectangle(
-                ((xs - 0.5 * dxm) * MM, (ys - 0.5 * t.strip_width) * MM),
+                ((xs - 0.5 * dxm) * MM, (ys - 0.5 * w) * MM),
                 0.5 * (dxm + dxp) * MM,
-                t.strip_width * MM,
+                w * MM,
                 color=plt.cm.inferno(pv / 1e6 / vmax),
                 lw=0,
             )

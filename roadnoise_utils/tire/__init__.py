@@ -4,11 +4,35 @@
 built from ``elements`` and ``rubber``) -> ``static`` (contact on a flat road or a drum) ->
 ``tasselli`` (the footprint in blocks). ``closed_form`` checks the ring against its
 closed-form frequencies, ``mode_shapes`` labels mode shapes, ``symmetry`` gives the exact
-mirror-symmetric subspace the response solvers use. A second tire model (the cross-section,
-DESIGN section 2b) takes its place beside ``ring_model``.
+mirror-symmetric subspace the response solvers use. The second tire model, the
+cross-section (DESIGN section 2b, ``[tire] model = "cross-section"``): ``cross_section``
+(validated construction files) -> ``laminate`` (layer constants) -> ``section_geometry`` and
+``section_mesh`` (the layered mesh) -> ``waveguide`` and ``section_model`` (harmonic matrices,
+inflation) -> ``section_contact`` and ``section_static`` (Green's functions, the loaded tire)
+-> ``section_dynamics`` (reduced harmonic receptances); ``section_checks`` verifies it.
 """
 
-from . import closed_form, elements, mode_shapes, ring_model, rubber, spec, static, symmetry, tasselli
+from . import (
+    closed_form,
+    cross_section,
+    elements,
+    laminate,
+    mode_shapes,
+    ring_model,
+    rubber,
+    section_checks,
+    section_contact,
+    section_dynamics,
+    section_geometry,
+    section_mesh,
+    section_model,
+    section_static,
+    spec,
+    static,
+    symmetry,
+    tasselli,
+    waveguide,
+)
 from .closed_form import ring_check, ring_convergence, ring_frequencies, ring_parameters
 from .ring_model import BeltMesh, FETModel, build_fet
 from .rubber import FractionalZener, compound_table
@@ -17,6 +41,16 @@ from .static import RoadSurface, StaticState, load_deflection, solve_static, sta
 from .tasselli import Tasselli
 
 __all__ = [
+    "cross_section",
+    "laminate",
+    "section_checks",
+    "section_contact",
+    "section_dynamics",
+    "section_geometry",
+    "section_mesh",
+    "section_model",
+    "section_static",
+    "waveguide",
     "BeltMesh",
     "FETModel",
     "FractionalZener",

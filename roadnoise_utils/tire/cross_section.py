@@ -38,7 +38,8 @@ class SectionGeometry:
     aspect_ratio: float = _p("-", 0.20, 1.00, "section height / section width")
     tread_width: float = _p("m", 0.05, 0.35, "width of the crown (tread and belt) measured across the tread surface")
     crown_radius: float = _p("m", 0.05, 5.0, "transverse radius of the tread surface")
-    max_width_radius: float = _p("m", 0.10, 0.60, "radius at which the section is widest")
+    shoulder_drop: float = _p("m", 0.0, 0.01, "extra drop of the tread surface at its edges (rounded shoulder)")
+    shoulder_width: float = _p("m", 0.002, 0.05, "width of the shoulder rounding at each edge of the tread")
     bead_radius: float = _p("m", 0.12, 0.35, "radius where the sidewall leaves the rim flange (clamped below)")
     bead_width: float = _p("m", 0.05, 0.40, "axial distance between the two points where the sidewalls leave the rim")
 
@@ -258,6 +259,11 @@ def _check_consistency(spec: CrossSectionSpec, source: str) -> None:
     """Cross-field checks: the section must fit between the rim and the outer radius."""
     g = spec.geometry
     height = g.section_width * g.aspect_ratio
+    if g.shoulder_width >= 0.5 * g.tread_width or g.shoulder_drop >= spec.thickness("tread"):
+        raise ValueError(
+            f"{source}: [geometry] shoulder_width = {g.shoulder_width:g} m must be below half the tread width and "
+            f"shoulder_drop = {g.shoulder_drop:g} m below the tread stack ({spec.thickness('tread'):g} m)"
+        )
     if spec.mesh.crown_elements % 2:
         raise ValueError(
             f"{source}: [mesh] crown_elements = {spec.mesh.crown_elements} must be even (a node on the centre line)"
@@ -266,10 +272,10 @@ def _check_consistency(spec: CrossSectionSpec, source: str) -> None:
         raise ValueError(f"{source}: [geometry] tread_width = {g.tread_width:g} m must be below section_width")
     if g.tread_width >= 2 * g.crown_radius:
         raise ValueError(f"{source}: [geometry] crown_radius = {g.crown_radius:g} m must exceed tread_width / 2")
-    if not g.rim_radius < g.bead_radius < g.max_width_radius < g.outer_radius:
+    if not g.rim_radius < g.bead_radius < g.outer_radius - spec.thickness("crown") - spec.thickness("tread"):
         raise ValueError(
             f"{source}: [geometry] need rim radius {g.rim_radius:g} < bead_radius {g.bead_radius:g} < "
-            f"max_width_radius {g.max_width_radius:g} < outer radius {g.outer_radius:g} m"
+            f"the belt's inner radius {g.outer_radius - spec.thickness('crown') - spec.thickness('tread'):g} m"
         )
     cover = spec.thickness("sidewall_cover")
     if g.bead_width >= g.section_width - 2 * cover:

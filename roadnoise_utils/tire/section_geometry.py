@@ -7,10 +7,13 @@ stack (``crown`` or ``sidewall``) and outward by the cover stack (``tread`` or
 
 * crown: a circular arc of radius ``crown_radius - tread thickness`` about the tread's centre of
   curvature, so the outer face is the tread surface of transverse radius ``crown_radius``;
-* sidewall: the equilibrium ("natural") shape of an inflated radial carcass
-  (:func:`natural_shape`), one branch from the widest point (at ``max_width_radius``, outer
-  face ``section_width / 2`` minus the sidewall cover) up to the belt edge and one down to
-  the bead (``bead_radius``, ``bead_width / 2``), so the inflation stresses it as a membrane;
+* sidewall: the equilibrium ("natural") shape of an inflated radial carcass, one meridional
+  tension constant ``N r`` from the bead (``bead_radius``, ``bead_width / 2``) to the belt edge,
+  its widest point at ``section_width / 2`` minus the sidewall cover
+  (:func:`natural_constants`; the radius of the widest point follows), so the inflation
+  stresses it as a membrane;
+* the tread surface drops by ``shoulder_drop`` (parabola) over the outer ``shoulder_width`` of
+  the crown, a rounded shoulder (the tread stack thins there);
 * the thickness changes from the crown's to the sidewall's over the first sidewall element
   (the shoulder), where the sidewall stacks' materials apply.
 
@@ -33,7 +36,9 @@ class Meridian:
     """Reference line at the node stations: points, unit outward normals, stack thicknesses.
 
     Arrays over stations (2E + 1), left bead to right bead. ``crown`` marks the stations of the
-    crown (between the belt edges, inclusive).
+    crown (between the belt edges, inclusive); ``widest_radius`` is the radius of the widest
+    point of the natural shape and ``natural_r0`` its ``r_0`` (m): the membrane tension is
+    ``N r = p (r_0^2 - r_w^2) / 2``.
     """
 
     r: np.ndarray
@@ -43,40 +48,72 @@ class Meridian:
     inner: np.ndarray
     outer: np.ndarray
     crown: np.ndarray
+    widest_radius: float = 0.0
+    natural_r0: float = 0.0
 
 
-def natural_shape(r_w: float, y_w: float, r_end: float, y_end: float, n: int) -> tuple[np.ndarray, ...]:
-    """Equilibrium meridian of an inflated radial carcass from its widest point to ``(r_end, y_end)``.
+def _drop(r_w: float, r0_sq: float, r_end: float, samples: int = 4001) -> tuple[np.ndarray, np.ndarray]:
+    """Radii from ``r_w`` to ``r_end`` and the axial drop of the natural shape there (m)."""
+    from scipy.integrate import cumulative_trapezoid
+
+    # r = r_w + (r_end - r_w) (1 - cos u) keeps the grid fine near both ends
+    grid = r_w + (r_end - r_w) * (1 - np.cos(np.linspace(0, np.pi / 2, samples)))
+    sin_b = (grid**2 - r_w**2) / (r0_sq - r_w**2)
+    tan_b = sin_b / np.sqrt(np.maximum(1 - sin_b**2, 1e-14))
+    return grid, -cumulative_trapezoid(np.abs(tan_b), np.abs(grid - r_w), initial=0.0)
+
+
+def natural_constants(y_w: float, bead: tuple[float, float], edge: tuple[float, float]) -> tuple[float, float]:
+    """Widest radius ``r_w`` and ``r_0^2`` of the one natural shape through the bead and the belt edge.
 
     A radial carcass carries no hoop force, so its meridional tension is :math:`N = C/r` and
     axial equilibrium of the part between ``r_w`` and ``r`` gives the tangent's angle to the
     radial direction, :math:`\\sin\\beta = (r^2 - r_w^2)/(r_0^2 - r_w^2)` (the "natural shape"
-    of Purdy 1963; Clark 1981, ch. 8), with ``r_0`` fitted so that the curve reaches
-    ``y_end``. Returns ``n + 1`` points equally spaced along the arc (the first the widest
-    point) and the unit tangents pointing away from it: ``r, y, t_r, t_y``.
+    of Purdy 1963; Clark 1981, ch. 8), one constant from the bead to the belt edge. Given the
+    widest point's axial position ``y_w``, the two ends fix ``r_w`` and ``r_0``.
     """
-    from scipy.integrate import cumulative_trapezoid
     from scipy.optimize import brentq
 
-    up = r_end > r_w
-    # the substitution r = r_w + (r_end - r_w) (1 - cos u) keeps the grid fine near both ends
-    grid = r_w + (r_end - r_w) * (1 - np.cos(np.linspace(0, np.pi / 2, 2001)))
+    (r_b, y_b), (r_e, y_e) = bead, edge
 
-    def drop(r0_sq: float) -> np.ndarray:
-        sin_b = (grid**2 - r_w**2) / (r0_sq - r_w**2)
-        tan_b = sin_b / np.sqrt(np.maximum(1 - sin_b**2, 1e-12))
-        return -cumulative_trapezoid(np.abs(tan_b), np.abs(grid - r_w), initial=0.0)
+    def r0_for(r_w: float) -> float:
+        low = (2 * r_w**2 - r_b**2) * (1 + 1e-9)  # |sin beta| = 1 at the bead: the widest possible bulge
+        return brentq(lambda v: _drop(r_w, v, r_b)[1][-1] - (y_b - y_w), low, 1e3 * r_w**2)
 
-    target = y_end - y_w
-    edge = r_end**2 if up else 2 * r_w**2 - r_end**2  # |sin beta| = 1 at r_end: the widest possible bulge
-    r0_sq = brentq(lambda v: drop(v)[-1] - target, edge * (1 + 1e-9), 1e3 * r_w**2)
-    y = y_w + drop(r0_sq)
+    def edge_miss(r_w: float) -> float:
+        try:
+            r0_sq = r0_for(r_w)
+        except ValueError:  # the lower branch cannot bulge out to the widest point: too close to the bead
+            return -1.0
+        if r0_sq <= r_e**2:  # the upper branch turns axial before the belt edge
+            return -1.0
+        return _drop(r_w, r0_sq, r_e)[1][-1] - (y_e - y_w)
+
+    candidates = np.linspace(r_b, r_e, 42)[1:-1]
+    misses = np.array([edge_miss(r) for r in candidates])
+    change = np.nonzero(np.diff(np.sign(misses)) > 0)[0]
+    if change.size == 0:
+        raise ValueError(
+            "no natural carcass shape joins the bead and the belt edge at this section width: check [geometry] "
+            "section_width, bead_radius, bead_width, tread_width and the stack thicknesses"
+        )
+    r_w = brentq(edge_miss, candidates[change[0]], candidates[change[0] + 1])
+    return r_w, r0_for(r_w)
+
+
+def natural_shape(r_w: float, y_w: float, r0_sq: float, r_end: float, n: int) -> tuple[np.ndarray, ...]:
+    """``n + 1`` points of the natural shape from the widest point to ``r_end``, equally spaced along the arc.
+
+    Returns ``r, y`` and the unit tangents pointing away from the widest point ``t_r, t_y``.
+    """
+    grid, drop = _drop(r_w, r0_sq, r_end)
+    y = y_w + drop
     arc = np.concatenate([[0.0], np.cumsum(np.hypot(np.diff(grid), np.diff(y)))])
     s = np.linspace(0, arc[-1], n + 1)
     r_s, y_s = np.interp(s, arc, grid), np.interp(s, arc, y)
     sin_b = np.clip((r_s**2 - r_w**2) / (r0_sq - r_w**2), -1, 1)
     cos_b = np.sqrt(1 - sin_b**2)
-    sign = 1.0 if up else -1.0
+    sign = 1.0 if r_end > r_w else -1.0
     return r_s, y_s, sign * cos_b, -np.abs(sin_b)
 
 
@@ -94,13 +131,15 @@ def meridian(spec: CrossSectionSpec) -> Meridian:
     crown_r, crown_y = centre + rho * np.cos(phi), rho * np.sin(phi)
     crown_nr, crown_ny = np.cos(phi), np.sin(phi)
     edge = (crown_r[-1], crown_y[-1])
-    widest = (g.max_width_radius, 0.5 * g.section_width - t_cover)
+    y_w = 0.5 * g.section_width - t_cover
+    bead = (g.bead_radius, 0.5 * g.bead_width)
+    r_w, r0_sq = natural_constants(y_w, bead, edge)
     n_s = 2 * m.sidewall_elements
-    upper_len = np.hypot(edge[0] - widest[0], edge[1] - widest[1])
-    lower_len = np.hypot(widest[0] - g.bead_radius, widest[1] - 0.5 * g.bead_width)
+    upper_len = np.hypot(edge[0] - r_w, edge[1] - y_w)
+    lower_len = np.hypot(r_w - bead[0], y_w - bead[1])
     n_up = min(max(2, 2 * round(0.5 * n_s * upper_len / (upper_len + lower_len))), n_s - 2)
-    ur, uy, utr, uty = natural_shape(*widest, edge[0], edge[1], n_up)
-    lr, ly, ltr, lty = natural_shape(*widest, g.bead_radius, 0.5 * g.bead_width, n_s - n_up)
+    ur, uy, utr, uty = natural_shape(r_w, y_w, r0_sq, edge[0], n_up)
+    lr, ly, ltr, lty = natural_shape(r_w, y_w, r0_sq, bead[0], n_s - n_up)
     # stations from the belt edge (excluded: it is the crown's last) over the widest point to the bead
     side_r = np.concatenate([ur[::-1][1:], lr[1:]])
     side_y = np.concatenate([uy[::-1][1:], ly[1:]])
@@ -116,10 +155,14 @@ def meridian(spec: CrossSectionSpec) -> Meridian:
     n_crown = crown_r.size
     inner = np.concatenate([np.full(n_crown, t_crown), np.full(side_r.size, t_side)])
     outer = np.concatenate([np.full(n_crown, t_tread), np.full(side_r.size, t_cover)])
+    # rounded shoulder: the tread surface drops (parabola) over the outer shoulder_width of the crown
+    into = np.clip((np.abs(crown_y) - (crown_y[-1] - g.shoulder_width)) / g.shoulder_width, 0.0, 1.0)
+    outer[:n_crown] -= g.shoulder_drop * into**2
+    t_edge_tread = outer[n_crown - 1]
     # shoulder: blend the thickness over the first sidewall element (two stations)
     for k, w in ((n_crown, 0.5), (n_crown + 1, 1.0)):
         inner[k] = (1 - w) * t_crown + w * t_side
-        outer[k] = (1 - w) * t_tread + w * t_cover
+        outer[k] = (1 - w) * t_edge_tread + w * t_cover
     crown = np.arange(half_r.size) < n_crown
 
     def mirror(a, sign):
@@ -133,6 +176,8 @@ def meridian(spec: CrossSectionSpec) -> Meridian:
         inner=mirror(inner, 1),
         outer=mirror(outer, 1),
         crown=mirror(crown, 1).astype(bool),
+        widest_radius=float(r_w),
+        natural_r0=float(np.sqrt(r0_sq)),
     )
 
 

@@ -94,6 +94,11 @@ class SectionStaticState:
         return float(np.sum(self.tasselli.area))
 
     @property
+    def node_pressure(self) -> np.ndarray:
+        """Contact pressure at each tasselli node, in their order (the order of :attr:`points`) (Pa)."""
+        return self.pressure[self.points]
+
+    @property
     def mean_pressure(self) -> float:
         return self.load / self.contact_area
 
@@ -194,6 +199,42 @@ def solve_section_static(
         grid=grid,
         tire=tire.spec,
     )
+
+
+def loaded_displacement(tire: SectionTire, state: SectionStaticState, theta: np.ndarray) -> np.ndarray:
+    """Displacement of every cross-section node at angles ``theta`` under the contact forces (m).
+
+    Returns (n_theta, n_nodes, 3) components ``u_r, u_theta, u_y``: the harmonic sum of the
+    symmetric and antisymmetric sets, each harmonic one sparse solve with the static moduli.
+    """
+    import scipy.sparse.linalg as spla
+
+    grid, ops = tire.grid, tire.ops
+    theta = np.atleast_1d(np.asarray(theta, float))
+    col, row = np.nonzero(state.contact)
+    force = state.contact_force[col, row]
+    th_b = grid.theta[row]
+    f_r, f_t = -force * np.cos(th_b), force * np.sin(th_b)
+    nodes = grid.nodes[col]
+    free = ops.free
+    out = np.zeros((theta.size, tire.mesh.n_nodes, 3))
+    for n in range(tire.harmonics + 1):
+        spread = np.sinc(n * grid.dtheta / (2 * np.pi))
+        cos_b, sin_b = np.cos(n * th_b) * spread, np.sin(n * th_b) * spread
+        loads = np.zeros((ops.n_dof, 2))
+        np.add.at(loads[:, 0], 3 * nodes, f_r * cos_b)  # symmetric set
+        np.add.at(loads[:, 0], 3 * nodes + 1, f_t * sin_b)
+        np.add.at(loads[:, 1], 3 * nodes, f_r * sin_b)  # antisymmetric set
+        np.add.at(loads[:, 1], 3 * nodes + 1, -f_t * cos_b)
+        amplitude = np.zeros((ops.n_dof, 2))
+        k = ops.stiffness(n, storage_only=True)[free][:, free].tocsc()
+        amplitude[free] = spla.splu(k).solve(loads[free])
+        sym, anti = amplitude[:, 0].reshape(-1, 3), amplitude[:, 1].reshape(-1, 3)
+        c, s = np.cos(n * theta)[:, None], np.sin(n * theta)[:, None]
+        out[:, :, 0] += c * sym[:, 0] + s * anti[:, 0]
+        out[:, :, 1] += s * sym[:, 1] - c * anti[:, 1]
+        out[:, :, 2] += c * sym[:, 2] + s * anti[:, 2]
+    return out
 
 
 def section_summary(state: SectionStaticState) -> pd.Series:

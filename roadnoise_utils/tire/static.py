@@ -122,6 +122,11 @@ class StaticState:
         return float(np.ptp(t.node_y) + t.strip_width)
 
     @property
+    def node_pressure(self) -> np.ndarray:
+        """Contact pressure at each tasselli node, in their order (Pa)."""
+        return self.pressure[self.tasselli.node_strip, self.tasselli.node_index]
+
+    @property
     def contact_area(self) -> float:
         """Gross contact area (m^2)."""
         return float(np.sum(self.tasselli.area))

@@ -1,0 +1,182 @@
+"""Tables of notebook 09, the cross-section FE tire: its construction, free modes, convergence, the two models.
+
+Each function takes tire names (files in ``data/tires``) or specs and returns a pandas table;
+the heavy stages come from the cache (:mod:`roadnoise_utils.repro.section_stages`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from ..repro import section_stages, stages
+from ..response.modal_reduction import identify_modes
+from ..tire.cross_section import LAYER_KINDS, CordLayer, CrossSectionSpec
+from ..tire.section_dynamics import harmonic_modes
+from ..tire.section_static import SectionTire, section_summary
+from ..tire.static import static_summary
+
+
+def layer_table(spec: CrossSectionSpec) -> pd.DataFrame:
+    """The construction, layer by layer: kind, thickness, density, in-plane moduli, compound and its loss."""
+    rows = []
+    omega = 2 * np.pi * 80.0
+    for name, layer in spec.layers.items():
+        compliance = np.linalg.inv(layer.stiffness())  # layer axes (n, theta, s)
+        stacks = [region for region, names in spec.construction.items() if name in names]
+        law = spec.compounds[layer.compound].law()
+        rows.append(
+            {
+                "layer": name,
+                "kind": next(kind for kind, cls in LAYER_KINDS.items() if isinstance(layer, cls)),
+                "stacks": ", ".join(stacks),
+                "thickness (mm)": layer.thickness * 1e3,
+                "density (kg/m^3)": getattr(layer, "effective_density", layer.density),
+                "E circumferential (MPa)": 1e-6 / compliance[1, 1],
+                "E meridional (MPa)": 1e-6 / compliance[2, 2],
+                "E normal (MPa)": 1e-6 / compliance[0, 0],
+                "cord angle (deg)": layer.cord_angle if isinstance(layer, CordLayer) else np.nan,
+                "compound": layer.compound,
+                "loss factor at 80 Hz": float(law.loss_factor(omega)),
+            }
+        )
+    return pd.DataFrame(rows).set_index("layer")
+
+
+def free_dispersion(tire: SectionTire, n_max: int = 12, f_max: float = 400.0, per_harmonic: int = 3) -> pd.DataFrame:
+    """Free-tire (rim fixed, unloaded) natural frequencies by harmonic: the dispersion of the tire.
+
+    Storage moduli at 80 Hz. Each mode is labelled by where its tread-centre motion points:
+    ``radial``, ``tangential`` or ``lateral`` (the largest component at the crown centre node).
+    """
+    omega = 2 * np.pi * 80.0
+    ops, mesh = tire.ops, tire.mesh
+    centre = mesh.node(mesh.n_stations // 2, mesh.n_rows - 1)
+    free = ops.free
+    rows = []
+    for n in range(n_max + 1):
+        phi = harmonic_modes(ops, n, omega, f_max, max_modes=40)
+        k = ops.stiffness(n, omega, storage_only=True)[free][:, free]
+        m = ops.mass_matrix(n)[free][:, free]
+        for j in range(min(per_harmonic, phi.shape[1])):
+            v = np.zeros(ops.n_dof)
+            v[free] = phi[:, j]
+            f = float(np.sqrt((phi[:, j] @ (k @ phi[:, j])) / (phi[:, j] @ (m @ phi[:, j]))) / (2 * np.pi))
+            kind = ("radial", "tangential", "lateral")[int(np.argmax(np.abs(v[3 * centre : 3 * centre + 3])))]
+            rows.append({"n": n, "order": j + 1, "frequency (Hz)": f, "crown motion": kind})
+    return pd.DataFrame(rows).set_index(["n", "order"])
+
+
+def convergence_table(tire: str | CrossSectionSpec, harmonics=(300, 400, 600), crown=(10, 14, 18)) -> pd.DataFrame:
+    """Loaded-tire numbers against the number of harmonics and of crown elements (issue 13, item 5c)."""
+    spec = section_stages.load_section_tire(tire)
+    cases = [("harmonics", h, {"mesh.harmonics": h}) for h in harmonics]
+    cases += [("crown elements", c, {"mesh.crown_elements": c}) for c in crown]
+    rows = []
+    for what, value, change in cases:
+        state = section_stages.section_static(spec.replace(**change))
+        s = section_summary(state)
+        rows.append(
+            {
+                "varied": what,
+                "value": value,
+                "deflection (mm)": s["deflection (mm)"],
+                "K_v (N/mm)": s["vertical stiffness, tangent (N/mm)"],
+                "footprint length (mm)": s["footprint length (mm)"],
+                "footprint width (mm)": s["footprint width (mm)"],
+                "peak pressure (MPa)": s["peak contact pressure (MPa)"],
+            }
+        )
+    return pd.DataFrame(rows).set_index(["varied", "value"])
+
+
+def model_comparison(ring: str = "165_65R14", cross: str = "165_65R14_cross_section") -> pd.DataFrame:
+    """The two tire models of one tire side by side: size, statics, first vertical mode."""
+    out = {}
+    for label, name in (("ring", ring), ("cross-section", cross)):
+        spec = stages.load_tire(name)
+        if isinstance(spec, CrossSectionSpec):
+            built = section_stages.section_tire(spec)
+            dof = f"{built.mesh.n_dof} x {spec.mesh.harmonics + 1} harmonics"
+            static = section_stages.section_static(spec)
+            frf = section_stages.section_footprint(spec)
+            summary = section_summary(static)
+        else:
+            built = stages.build_fet(spec)
+            dof = f"{built.n_dof}"
+            static = stages.solve_static(spec)
+            frf = stages.frf_visco(spec)
+            summary = static_summary({"x": static})["x"]
+        modes = identify_modes(frf.freqs, frf.H_tot)
+        out[label] = {
+            "DOF": dof,
+            "deflection (mm)": summary["deflection (mm)"],
+            "K_v (N/mm)": summary["vertical stiffness, tangent (N/mm)"],
+            "footprint length (mm)": summary["footprint length (mm)"],
+            "footprint width (mm)": summary["footprint width (mm)"],
+            "peak contact pressure (MPa)": summary["peak contact pressure (MPa)"],
+            "contact points": summary["contact points"],
+            "tasselli": summary["tasselli"],
+            "first vertical mode (Hz)": float(modes.table()["frequency (Hz)"].iloc[0]),
+            "zeta1 (fit)": float(modes.damping[0]),
+        }
+    return pd.DataFrame(out)
+
+
+def tire_mass(tire: SectionTire) -> float:
+    """Mass of the meshed tire (kg): the n = 0 mass of a uniform radial motion."""
+    ops = tire.ops
+    radial = np.zeros(ops.n_dof)
+    radial[0::3] = 1.0
+    return float(radial @ (ops.mass_matrix(0) @ radial))
+
+
+def membrane_forces(tire: SectionTire) -> pd.DataFrame:
+    """Meridional and hoop forces of the inflation pre-stress at each element station (N/m).
+
+    The stresses at the element's middle integration points (``xi = 0``) of both element layers,
+    integrated through the thickness; ``N_s r`` is constant along a radial carcass (membrane).
+    """
+    mesh, ops, line = tire.mesh, tire.ops, tire.line
+    pts = mesh.points
+    n_layers = (mesh.n_rows - 1) // 2
+    rows = []
+    for e in range((mesh.n_stations - 1) // 2):
+        station = 2 * e + 1
+        s_r, s_y = -line.normal_y[station], line.normal_r[station]  # meridian tangent
+        n_s = n_t = 0.0
+        for layer in range(n_layers):
+            element = e * n_layers + layer
+            sel = (pts.element == element) & np.isclose(pts.xi, 0.0)
+            thickness_weight = pts.weight[sel] / (8.0 / 9.0) * _thickness_jacobian(mesh, element, pts.eta[sel])
+            sig = ops.stress[sel]
+            n_s += thickness_weight @ (sig[:, 0] * s_r**2 + sig[:, 2] * s_y**2 + 2 * sig[:, 4] * s_r * s_y)
+            n_t += thickness_weight @ sig[:, 1]
+        radius = line.r[station]
+        rows.append(
+            {
+                "y (mm)": line.y[station] * 1e3,
+                "r (mm)": radius * 1e3,
+                "region": "crown" if line.crown[station] else "sidewall",
+                "N_s (N/m)": n_s,
+                "N_theta (N/m)": n_t,
+                "N_s r (N)": n_s * radius,
+            }
+        )
+    table = pd.DataFrame(rows)
+    p = ops.pressure_value
+    table["N_s r, membrane (N)"] = np.where(
+        table["region"] == "sidewall", 0.5 * p * (line.natural_r0**2 - line.widest_radius**2), np.nan
+    )
+    return table
+
+
+def _thickness_jacobian(mesh, element: int, eta: np.ndarray) -> np.ndarray:
+    """|dx/deta| at the middle of the element (m per unit eta)."""
+    from ..tire.waveguide import lagrange3
+
+    nodes = mesh.elements[element]
+    n_xi, _ = lagrange3(np.zeros(eta.size))
+    _, d_eta = lagrange3(eta)
+    shape = (n_xi[:, None, :] * d_eta[None, :, :]).reshape(9, -1)
+    return np.hypot(mesh.r[nodes] @ shape, mesh.y[nodes] @ shape)
