@@ -19,7 +19,7 @@ LAYERS = [
     ["rm"],
     ["vehicle"],
     ["repro.cache", "repro.style"],
-    ["repro.stages"],
+    ["repro.stages", "repro.section_stages"],
     ["experiments"],
     ["repro.claims", "repro.collection"],
     ["figures"],

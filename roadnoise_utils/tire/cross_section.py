@@ -26,22 +26,24 @@ from typing import Any
 import numpy as np
 
 from . import laminate
-from .spec import Compound, Operating, Tassellation, _build_section, _p, check_model
+from .spec import Compound, Operating, Tassellation, build_section, check_model, param
 
 
 @dataclass(frozen=True)
 class SectionGeometry:
     """Outer profile and meridian of the inflated cross-section."""
 
-    rim_diameter: float = _p("m", 0.25, 0.60, "nominal rim (bead seat) diameter")
-    section_width: float = _p("m", 0.10, 0.40, "nominal section width (outer faces of the sidewalls)")
-    aspect_ratio: float = _p("-", 0.20, 1.00, "section height / section width")
-    tread_width: float = _p("m", 0.05, 0.35, "width of the crown (tread and belt) measured across the tread surface")
-    crown_radius: float = _p("m", 0.05, 5.0, "transverse radius of the tread surface")
-    shoulder_drop: float = _p("m", 0.0, 0.01, "extra drop of the tread surface at its edges (rounded shoulder)")
-    shoulder_width: float = _p("m", 0.002, 0.05, "width of the shoulder rounding at each edge of the tread")
-    bead_radius: float = _p("m", 0.12, 0.35, "radius where the sidewall leaves the rim flange (clamped below)")
-    bead_width: float = _p("m", 0.05, 0.40, "axial distance between the two points where the sidewalls leave the rim")
+    rim_diameter: float = param("m", 0.25, 0.60, "nominal rim (bead seat) diameter")
+    section_width: float = param("m", 0.10, 0.40, "nominal section width (outer faces of the sidewalls)")
+    aspect_ratio: float = param("-", 0.20, 1.00, "section height / section width")
+    tread_width: float = param("m", 0.05, 0.35, "width of the crown (tread and belt) measured across the tread surface")
+    crown_radius: float = param("m", 0.05, 5.0, "transverse radius of the tread surface")
+    shoulder_drop: float = param("m", 0.0, 0.01, "extra drop of the tread surface at its edges (rounded shoulder)")
+    shoulder_width: float = param("m", 0.002, 0.05, "width of the shoulder rounding at each edge of the tread")
+    bead_radius: float = param("m", 0.12, 0.35, "radius where the sidewall leaves the rim flange (clamped below)")
+    bead_width: float = param(
+        "m", 0.05, 0.40, "axial distance between the two points where the sidewalls leave the rim"
+    )
 
     @property
     def rim_radius(self) -> float:
@@ -57,20 +59,20 @@ class SectionGeometry:
 class SectionMeshing:
     """Discretisation: elements across the cross-section, harmonics around it, contact grid."""
 
-    crown_elements: int = _p("-", 2, 80, "9-node elements across the crown (contact nodes 2x + 1)", integer=True)
-    sidewall_elements: int = _p("-", 2, 60, "9-node elements along each sidewall, bead to belt edge", integer=True)
-    harmonics: int = _p("-", 8, 4000, "highest circumferential harmonic n of the Fourier series", integer=True)
-    contact_spacing: float = _p("m", 0.0005, 0.02, "spacing of the contact points along the circumference")
+    crown_elements: int = param("-", 2, 80, "9-node elements across the crown (contact nodes 2x + 1)", integer=True)
+    sidewall_elements: int = param("-", 2, 60, "9-node elements along each sidewall, bead to belt edge", integer=True)
+    harmonics: int = param("-", 8, 4000, "highest circumferential harmonic n of the Fourier series", integer=True)
+    contact_spacing: float = param("m", 0.0005, 0.02, "spacing of the contact points along the circumference")
 
 
 @dataclass(frozen=True)
 class RubberLayer:
     """An isotropic rubber layer (liner, sidewall, undertread)."""
 
-    thickness: float = _p("m", 1e-4, 0.05, "layer thickness")
-    density: float = _p("kg/m^3", 500.0, 3000.0, "density")
-    youngs_modulus: float = _p("Pa", 1e5, 1e8, "static Young's modulus of the compound")
-    poisson: float = _p("-", 0.0, 0.499, "Poisson ratio (rubber ~0.49; the element is displacement-based)")
+    thickness: float = param("m", 1e-4, 0.05, "layer thickness")
+    density: float = param("kg/m^3", 500.0, 3000.0, "density")
+    youngs_modulus: float = param("Pa", 1e5, 1e8, "static Young's modulus of the compound")
+    poisson: float = param("-", 0.0, 0.499, "Poisson ratio (rubber ~0.49; the element is displacement-based)")
     compound: str = field(default="", metadata={"compound": True})
 
     def stiffness(self) -> np.ndarray:
@@ -82,12 +84,16 @@ class RubberLayer:
 class CordLayer:
     """A cord-rubber ply: carcass, steel belt, nylon cap."""
 
-    thickness: float = _p("m", 1e-4, 0.01, "ply thickness (cords and skim)")
-    density: float = _p("kg/m^3", 500.0, 8000.0, "density of the ply (cords and skim)")
-    cord_modulus: float = _p("Pa", 1e8, 3e11, "Young's modulus of the cord (twisted steel ~150 GPa, polyester ~4 GPa)")
-    matrix_modulus: float = _p("Pa", 1e5, 1e8, "static Young's modulus of the skim rubber")
-    cord_volume_fraction: float = _p("-", 0.01, 0.7, "volume fraction of cord in the ply")
-    cord_angle: float = _p("deg", 0.0, 90.0, "cord angle from the circumferential direction (plies come in +/- pairs)")
+    thickness: float = param("m", 1e-4, 0.01, "ply thickness (cords and skim)")
+    density: float = param("kg/m^3", 500.0, 8000.0, "density of the ply (cords and skim)")
+    cord_modulus: float = param(
+        "Pa", 1e8, 3e11, "Young's modulus of the cord (twisted steel ~150 GPa, polyester ~4 GPa)"
+    )
+    matrix_modulus: float = param("Pa", 1e5, 1e8, "static Young's modulus of the skim rubber")
+    cord_volume_fraction: float = param("-", 0.01, 0.7, "volume fraction of cord in the ply")
+    cord_angle: float = param(
+        "deg", 0.0, 90.0, "cord angle from the circumferential direction (plies come in +/- pairs)"
+    )
     compound: str = field(default="", metadata={"compound": True})
 
     def constants(self) -> dict[str, float]:
@@ -102,11 +108,11 @@ class CordLayer:
 class TreadLayer:
     """The grooved tread as a smeared layer of bonded blocks (see the module notes)."""
 
-    thickness: float = _p("m", 1e-3, 0.03, "tread depth (blocks)")
-    density: float = _p("kg/m^3", 500.0, 3000.0, "density of the tread compound")
-    youngs_modulus: float = _p("Pa", 1e5, 1e8, "static Young's modulus of the tread compound")
-    shape_factor: float = _p("-", 0.0, 5.0, "block shape factor S = loaded area / free (bulging) area")
-    void_ratio: float = _p("-", 0.0, 0.8, "groove void ratio of the tread pattern")
+    thickness: float = param("m", 1e-3, 0.03, "tread depth (blocks)")
+    density: float = param("kg/m^3", 500.0, 3000.0, "density of the tread compound")
+    youngs_modulus: float = param("Pa", 1e5, 1e8, "static Young's modulus of the tread compound")
+    shape_factor: float = param("-", 0.0, 5.0, "block shape factor S = loaded area / free (bulging) area")
+    void_ratio: float = param("-", 0.0, 0.8, "groove void ratio of the tread pattern")
     compound: str = field(default="", metadata={"compound": True})
 
     @property
@@ -204,12 +210,12 @@ def _layer(name: str, values: Any, source: str, compounds: dict) -> RubberLayer 
             f"{source}: [{where}] compound = {compound!r} names no [compounds.*] table; defined: {sorted(compounds)}"
         )
     numeric = {k: v for k, v in values.items() if k not in ("kind", "compound")}
-    layer = _build_section(_numeric_view(cls), numeric, where, source)
+    layer = build_section(_numeric_view(cls), numeric, where, source)
     return cls(**dataclasses.asdict(layer), compound=compound)
 
 
 def _numeric_view(cls: type) -> type:
-    """A dataclass with only the numeric fields of ``cls`` (for :func:`.spec._build_section`)."""
+    """A dataclass with only the numeric fields of ``cls`` (for :func:`.spec.build_section`)."""
     fields = [(f.name, float, field(metadata=f.metadata)) for f in dataclasses.fields(cls) if "range" in f.metadata]
     return dataclasses.make_dataclass(cls.__name__, fields, frozen=True)
 
@@ -227,9 +233,9 @@ def from_dict(data: dict[str, Any], source: str = "<dict>") -> CrossSectionSpec:
     if not isinstance(name, str) or not name:
         raise ValueError(f"{source}: [tire] name must be a non-empty string")
     check_model(data, source, "cross-section")
-    sections = {key: _build_section(cls, data[key], key, source) for key, cls in SECTIONS.items()}
+    sections = {key: build_section(cls, data[key], key, source) for key, cls in SECTIONS.items()}
     compounds = {
-        key: _build_section(Compound, value, f"compounds.{key}", source)
+        key: build_section(Compound, value, f"compounds.{key}", source)
         for key, value in sorted(data["compounds"].items())
     }
     layers = {key: _layer(key, value, source, compounds) for key, value in data["layers"].items()}

@@ -21,13 +21,14 @@ import numpy as np
 import pandas as pd
 
 from .. import guards
+from .active_set import active_set
 from .cross_section import CrossSectionSpec
 from .section_contact import ContactGrid, contact_grid, harmonic_flexibility, vertical_compliance
 from .section_dynamics import rim_transfer
 from .section_geometry import Meridian, section_mesh
 from .section_mesh import SectionMesh
 from .section_model import HarmonicOperators, harmonic_operators
-from .static import RoadSurface, active_set, check_load, make_road
+from .static import RoadSurface, check_load, make_road
 from .tasselli import Tasselli, tassellate
 
 

@@ -25,7 +25,7 @@ from ..repro.paths import data_file, read_toml
 from .rubber import FractionalZener
 
 
-def _p(unit: str, lo: float, hi: float, doc: str, integer: bool = False) -> Any:
+def param(unit: str, lo: float, hi: float, doc: str, integer: bool = False) -> Any:
     """Declare a parameter field with its unit, valid closed range and meaning."""
     return field(metadata={"unit": unit, "range": (lo, hi), "doc": doc, "integer": integer})
 
@@ -34,14 +34,14 @@ def _p(unit: str, lo: float, hi: float, doc: str, integer: bool = False) -> Any:
 class Geometry:
     """Size and shape of the unloaded, inflated tire."""
 
-    rim_diameter: float = _p("m", 0.25, 0.60, "nominal rim (bead seat) diameter")
-    section_width: float = _p("m", 0.10, 0.40, "nominal section width")
-    aspect_ratio: float = _p("-", 0.20, 1.00, "section height / section width")
-    belt_width: float = _p("m", 0.05, 0.35, "width of the belt/tread band that is modelled")
-    tread_thickness: float = _p("m", 0.003, 0.030, "belt centre line to tread surface")
-    crown_drop: float = _p("m", 0.0, 0.020, "drop of the tread-surface radius from centre to belt edge")
-    crown_exponent: float = _p("-", 1.0, 8.0, "shape exponent of the crown drop, drop * |2y/b|^exponent")
-    max_width_radius: float = _p("m", 0.10, 0.60, "radius at which the inflated section is widest")
+    rim_diameter: float = param("m", 0.25, 0.60, "nominal rim (bead seat) diameter")
+    section_width: float = param("m", 0.10, 0.40, "nominal section width")
+    aspect_ratio: float = param("-", 0.20, 1.00, "section height / section width")
+    belt_width: float = param("m", 0.05, 0.35, "width of the belt/tread band that is modelled")
+    tread_thickness: float = param("m", 0.003, 0.030, "belt centre line to tread surface")
+    crown_drop: float = param("m", 0.0, 0.020, "drop of the tread-surface radius from centre to belt edge")
+    crown_exponent: float = param("-", 1.0, 8.0, "shape exponent of the crown drop, drop * |2y/b|^exponent")
+    max_width_radius: float = param("m", 0.10, 0.60, "radius at which the inflated section is widest")
 
     @property
     def outer_radius(self) -> float:
@@ -63,9 +63,9 @@ class Geometry:
 class Operating:
     """Test conditions the tire is built for."""
 
-    inflation_pressure: float = _p("Pa", 0.5e5, 5.0e5, "inflation pressure")
-    vertical_load: float = _p("N", 500.0, 15000.0, "nominal vertical load")
-    rim_width: float = _p(
+    inflation_pressure: float = param("Pa", 0.5e5, 5.0e5, "inflation pressure")
+    vertical_load: float = param("N", 500.0, 15000.0, "nominal vertical load")
+    rim_width: float = param(
         "m",
         0.08,
         0.30,
@@ -77,24 +77,26 @@ class Operating:
 class Mesh:
     """Discretisation of the belt."""
 
-    n_strips: int = _p("-", 1, 41, "number of lateral belt strips (rings)", integer=True)
-    n_elements: int = _p("-", 24, 2000, "frame elements around each ring", integer=True)
+    n_strips: int = param("-", 1, 41, "number of lateral belt strips (rings)", integer=True)
+    n_elements: int = param("-", 24, 2000, "frame elements around each ring", integer=True)
 
 
 @dataclass(frozen=True)
 class Belt:
     """Belt + tread band, per whole belt width, modelled as coupled rings of frame elements."""
 
-    mass_per_length: float = _p(
+    mass_per_length: float = param(
         "kg/m", 0.3, 10.0, "mass per circumferential length of belt, tread and the crown share of the sidewalls"
     )
-    axial_stiffness: float = _p("N", 1.0e4, 1.0e9, "membrane stiffness EA of the whole belt width")
-    bending_stiffness: float = _p("N m^2", 0.01, 200.0, "bending stiffness EI of the whole belt width")
-    bending_rubber_fraction: float = _p("-", 0.0, 1.0, "share of EI carried by rubber (viscoelastic, compound 'belt')")
-    inplane_shear_stiffness: float = _p(
+    axial_stiffness: float = param("N", 1.0e4, 1.0e9, "membrane stiffness EA of the whole belt width")
+    bending_stiffness: float = param("N m^2", 0.01, 200.0, "bending stiffness EI of the whole belt width")
+    bending_rubber_fraction: float = param(
+        "-", 0.0, 1.0, "share of EI carried by rubber (viscoelastic, compound 'belt')"
+    )
+    inplane_shear_stiffness: float = param(
         "N/m", 0.0, 1.0e8, "in-plane shear stiffness G*h coupling the circumferential motion of adjacent strips"
     )
-    lateral_bending_stiffness: float = _p(
+    lateral_bending_stiffness: float = param(
         "N m", 0.0, 200.0, "bending stiffness D across the width, per unit circumferential length"
     )
 
@@ -103,31 +105,31 @@ class Belt:
 class Foundation:
     """Sidewalls and air as a distributed foundation from the belt to the rim, per unit length."""
 
-    radial_pressure_factor: float = _p("-", 0.0, 20.0, "pneumatic radial foundation stiffness / inflation pressure")
-    radial_rubber: float = _p(
+    radial_pressure_factor: float = param("-", 0.0, 20.0, "pneumatic radial foundation stiffness / inflation pressure")
+    radial_rubber: float = param(
         "N/m^2", 0.0, 5.0e6, "radial foundation stiffness of the sidewall rubber (compound 'sidewall')"
     )
-    tangential_pressure_factor: float = _p(
+    tangential_pressure_factor: float = param(
         "-", 0.0, 20.0, "pneumatic tangential foundation stiffness / inflation pressure"
     )
-    tangential_rubber: float = _p(
+    tangential_rubber: float = param(
         "N/m^2", 0.0, 5.0e6, "tangential foundation stiffness of the sidewall rubber (compound 'sidewall')"
     )
-    edge_factor: float = _p("-", 0.1, 50.0, "foundation stiffness of each edge strip relative to an inner strip")
-    crown_mass_share: float = _p(
+    edge_factor: float = param("-", 0.1, 50.0, "foundation stiffness of each edge strip relative to an inner strip")
+    crown_mass_share: float = param(
         "-", 0.0, 1.0, "share of the sidewall mass carried by the belt (rest moves with the rim)"
     )
-    sidewall_mass: float = _p("kg", 0.0, 20.0, "mass of both sidewalls")
+    sidewall_mass: float = param("kg", 0.0, 20.0, "mass of both sidewalls")
 
 
 @dataclass(frozen=True)
 class Tread:
     """Tread rubber between the belt and the road: a viscoelastic (compound 'tread') foundation."""
 
-    normal_stiffness_per_area: float = _p(
+    normal_stiffness_per_area: float = param(
         "N/m^3", 1.0e7, 1.0e11, "normal stiffness of the tread per unit gross contact area, E_c(1 - void)/h"
     )
-    shear_stiffness_per_area: float = _p(
+    shear_stiffness_per_area: float = param(
         "N/m^3", 1.0e6, 1.0e11, "shear stiffness of the tread per unit gross contact area, G(1 - void)/h"
     )
 
@@ -136,19 +138,19 @@ class Tread:
 class Tassellation:
     """How the footprint is divided into tasselli (paper Fig. 2)."""
 
-    target_length: float = _p(
+    target_length: float = param(
         "m", 0.005, 0.025, "longitudinal length of a row of tasselli (<= 25 mm to resolve 5 cm wavelengths)"
     )
-    strips_per_column: int = _p("-", 1, 10, "belt strips grouped into one column of tasselli", integer=True)
+    strips_per_column: int = param("-", 1, 10, "belt strips grouped into one column of tasselli", integer=True)
 
 
 @dataclass(frozen=True)
 class Compound:
     """Fractional-Zener parameters of one rubber compound (see :mod:`.viscoelastic`)."""
 
-    modulus_ratio: float = _p("-", 1.0001, 100.0, "E_inf / E_0")
-    relaxation_time: float = _p("s", 1.0e-9, 1.0, "relaxation time tau")
-    order: float = _p("-", 0.01, 1.0, "fractional order alpha")
+    modulus_ratio: float = param("-", 1.0001, 100.0, "E_inf / E_0")
+    relaxation_time: float = param("s", 1.0e-9, 1.0, "relaxation time tau")
+    order: float = param("-", 0.01, 1.0, "fractional order alpha")
 
     def law(self) -> FractionalZener:
         """The :class:`FractionalZener` law of this compound."""
@@ -239,7 +241,7 @@ SECTIONS = {
 }
 
 
-def _build_section(cls: type, values: Any, where: str, source: str) -> Any:
+def build_section(cls: type, values: Any, where: str, source: str) -> Any:
     """Validate one TOML table against the field metadata of ``cls``."""
     if not isinstance(values, dict):
         raise ValueError(f"{source}: [{where}] must be a table")
@@ -312,7 +314,7 @@ def from_dict(data: dict[str, Any], source: str = "<dict>") -> TireSpec:
     if not isinstance(name, str) or not name:
         raise ValueError(f"{source}: [tire] name must be a non-empty string")
     check_model(data, source, "ring")
-    sections = {key: _build_section(cls, data[key], key, source) for key, cls in SECTIONS.items()}
+    sections = {key: build_section(cls, data[key], key, source) for key, cls in SECTIONS.items()}
     compounds_data = data["compounds"]
     if not isinstance(compounds_data, dict):
         raise ValueError(f"{source}: [compounds] must be a table of compound tables")
@@ -320,8 +322,7 @@ def from_dict(data: dict[str, Any], source: str = "<dict>") -> TireSpec:
     if missing_c:
         raise ValueError(f"{source}: missing compound table(s) {['[compounds.' + c + ']' for c in missing_c]}")
     compounds = {
-        key: _build_section(Compound, value, f"compounds.{key}", source)
-        for key, value in sorted(compounds_data.items())
+        key: build_section(Compound, value, f"compounds.{key}", source) for key, value in sorted(compounds_data.items())
     }
     spec = TireSpec(name=name, compounds=compounds, source=source, **sections)
     _check_consistency(spec, source)

@@ -1,83 +1,93 @@
-"""The cross-section (waveguide) FE tire: element checks against closed forms and a 3-D assembly.
-
-Issue 13, verification (a), (b), (e) and the element properties; the loaded tire is in
-``test_section_static.py``.
-"""
+"""Cross-section tire files: the model key, the construction, and every kind of bad input named."""
 
 from __future__ import annotations
+
+import copy
+import tomllib
 
 import numpy as np
 import pytest
 
-from roadnoise_utils.tire import section_checks
-from roadnoise_utils.tire.closed_form import RingParameters, ring_frequencies
-from roadnoise_utils.tire.section_checks import LAW, band
-from roadnoise_utils.tire.section_model import harmonic_operators
-from roadnoise_utils.tire.waveguide import harmonic_weight, pressure_operators
+import roadnoise_utils as ru
+from roadnoise_utils.guards import ResourceLimitError
+from roadnoise_utils.repro import section_stages
+from roadnoise_utils.repro.paths import data_dir
+from roadnoise_utils.tire import cross_section, laminate
+from roadnoise_utils.tire.cross_section import CrossSectionSpec
+
+NAME = "165_65R14_cross_section"
 
 
-def test_thin_ring_on_foundation_matches_the_closed_form():
-    """(a) One thin stiff layer, tension and follower pressure, radial/tangential foundation: DESIGN section 2."""
-    table = section_checks.ring_check()
-    assert table["error (%)"].abs().max() < 1.0
+def _raw(name=NAME):
+    with open(data_dir() / "tires" / f"{name}.toml", "rb") as fh:
+        return tomllib.load(fh)
 
 
-def test_free_thin_ring_bending_frequencies():
-    """(a) Without tension or foundation the flexural modes n = 2..6 agree to 0.1 %."""
-    table = section_checks.ring_check(tension=0.0, k_r=0.0, k_t=0.0)
-    assert table["error (%)"].iloc[1:].abs().max() < 0.1
-    ring = RingParameters(0.3, 2e9 * 0.1 * 0.002**3 / 12, 0.0, 0.0, 0.0, 1200.0 * 0.1 * 0.002)
-    np.testing.assert_allclose(table["closed form (Hz)"].iloc[1:], ring_frequencies(np.arange(2, 7), ring))
+@pytest.mark.parametrize("name", [NAME, "195_65R15_cross_section"])
+def test_model_key_selects_the_tire_model(name):
+    spec = ru.load_tire(name)
+    assert isinstance(spec, CrossSectionSpec) and spec.model == "cross-section"
+    assert ru.load_tire(name.removesuffix("_cross_section")).model == "ring"
+    assert cross_section.to_dict(cross_section.from_dict(cross_section.to_dict(spec))) == cross_section.to_dict(spec)
 
 
-def test_rigid_body_motions_store_no_strain_energy():
-    """The strain operators: translation (n = 0 along y, n = 1 across) and rotation about the axle are free."""
-    mesh = band(n_el=3, poisson=0.3)
-    ops = harmonic_operators(mesh, LAW, 0.0, fixed=np.array([], int), prestress=np.zeros((mesh.points.element.size, 6)))
-    k0, k1 = ops.stiffness(0, storage_only=True), ops.stiffness(1, storage_only=True)
-    axial = np.zeros(mesh.n_dof)
-    axial[2::3] = 1.0
-    spin = np.zeros(mesh.n_dof)
-    spin[1::3] = mesh.r  # u_theta = r
-    across = np.zeros(mesh.n_dof)
-    across[0::3], across[1::3] = 1.0, -1.0  # u = e_r cos - e_t sin: a rigid translation
-    scale = abs(k0).max()
-    for k, u in ((k0, axial), (k0, spin), (k1, across)):
-        assert np.abs(k @ u).max() < 1e-9 * scale * np.abs(u).max()
+def test_cord_ply_constants_follow_the_rule_of_mixtures_and_halpin_tsai():
+    c = laminate.cord_ply_constants(150e9, 8e6, 0.2)
+    assert c["E_L"] == pytest.approx(0.2 * 150e9 + 0.8 * 8e6)
+    # Halpin-Tsai with xi = 2 lies between the series (Reuss) and parallel (Voigt) bounds
+    reuss = 1 / (0.2 / 150e9 + 0.8 / 8e6)
+    assert reuss < c["E_T"] < c["E_L"]
+    # a balanced +/-beta ply has no normal-shear coupling, and beta = 0 puts E_L along theta
+    ply = laminate.cord_layer(c, 22.0)
+    assert abs(ply[1, 3]) < 1e-9 * ply[1, 1]
+    along = laminate.cord_layer(c, 0.0)
+    compliance = np.linalg.inv(along)  # the compliance's theta-theta entry is 1 / E_theta
+    assert 1 / compliance[1, 1] == pytest.approx(c["E_L"], rel=1e-9)
 
 
-def test_pressure_volume_matches_the_exact_deformed_volume():
-    """The load stiffness is -p times the Hessian of the volume: second-order volume of a ring deformation."""
-    mesh = band(n_el=4)
-    dv, h0, h1 = pressure_operators(mesh.r, mesh.y, mesh.face_lines(0), mesh.n_dof)
-    inner, width = 0.3 - 0.001, 0.1
-    assert harmonic_weight(0) * dv[0::3].sum() == pytest.approx(2 * np.pi * inner * width)
-    theta = np.linspace(0, 2 * np.pi, 4001)[:-1]
-    for n, a_r, a_t in ((2, 1.0, -0.5), (3, 0.7, 0.4)):
-        a = np.zeros(mesh.n_dof)
-        a[0::3], a[1::3] = a_r, a_t
-        ours = harmonic_weight(n) * 0.5 * a @ ((h0 + n * h1) @ a)
-
-        # exact area inside the curve r = inner + u_r, tangential u_t, second order in the amplitude
-        def area(eps, n=n, a_r=a_r, a_t=a_t):
-            ur, ut = eps * a_r * np.cos(n * theta), eps * a_t * np.sin(n * theta)
-            x = (inner + ur) * np.cos(theta) - ut * np.sin(theta)
-            z = (inner + ur) * np.sin(theta) + ut * np.cos(theta)
-            dx = np.gradient(np.concatenate([x[-1:], x, x[:1]]), 2 * np.pi / theta.size)[1:-1]
-            dz = np.gradient(np.concatenate([z[-1:], z, z[:1]]), 2 * np.pi / theta.size)[1:-1]
-            return 0.5 * np.mean(x * dz - z * dx) * 2 * np.pi
-
-        eps = 1e-3
-        exact = width * (area(eps) + area(-eps) - 2 * area(0.0)) / (2 * eps**2)
-        assert ours == pytest.approx(exact, rel=1e-5)
+def _edit(path, value):
+    data = copy.deepcopy(_raw())
+    node = data
+    *parents, leaf = path
+    for part in parents:
+        node = node[part]
+    if value is None:
+        del node[leaf]
+    else:
+        node[leaf] = value
+    return data
 
 
-def test_inflated_torus_carries_the_membrane_forces():
-    """(b) Linear inflation of a thin torus: the membrane forces of Timoshenko & Woinowsky-Krieger to 1.5 %."""
-    table = section_checks.torus_check()
-    assert table[["error N_theta (%)", "error N_phi (%)"]].abs().to_numpy().max() < 1.5
+@pytest.mark.parametrize(
+    ("path", "value", "message"),
+    [
+        (("tire", "model"), "shell", r"\[tire\] model = 'shell': valid values are \['ring', 'cross-section'\]"),
+        (("layers", "belt_1", "kind"), "steel", r"\[layers.belt_1\] kind = 'steel': valid kinds"),
+        (("layers", "cap", "compound"), "nylon", r"\[layers.cap\] compound = 'nylon' names no \[compounds"),
+        (("layers", "tread", "void_ratio"), 0.95, r"\[layers.tread\] void_ratio = 0.95 - is outside its valid range"),
+        (("layers", "carcass", "cord_angle"), None, r"\[layers.carcass\] is missing 'cord_angle'"),
+        (("construction", "crown"), ["liner", "kevlar"], r"\[construction\] crown = .* must be a non-empty list"),
+        (("mesh", "crown_elements"), 15, r"crown_elements = 15 must be even"),
+        (("geometry", "bead_radius"), 0.3, r"need rim radius .* < bead_radius 0.3"),
+        (("mesh", "contact_spacing"), 0.05, r"\[mesh\] contact_spacing = 0.05 m is outside its valid range"),
+    ],
+)
+def test_bad_construction_is_named(path, value, message):
+    with pytest.raises(ValueError, match=message):
+        cross_section.from_dict(_edit(path, value), "x.toml")
 
 
-def test_harmonic_sum_equals_a_direct_three_d_assembly():
-    """(e) Receptance of a clamped band under vertical point forces: harmonic sum = 3-D solve to 1e-6."""
-    assert section_checks.three_d_check() < 1e-6
+def test_each_model_refuses_the_other_models_file():
+    with pytest.raises(TypeError, match="cross-section tire"):
+        ru.build_fet(ru.load_tire(NAME))
+    with pytest.raises(ValueError, match="is a 'ring' tire file"):
+        section_stages.section_tire("165_65R14")
+
+
+def test_a_contact_grid_too_fine_for_memory_is_refused_before_the_solve(monkeypatch):
+    monkeypatch.setenv("ROADNOISE_MAX_BYTES", "1e8")
+    tire = section_stages.section_tire(ru.load_tire(NAME).replace(**{"mesh.contact_spacing": 0.001}))
+    from roadnoise_utils.tire.section_static import solve_section_static
+
+    with pytest.raises(ResourceLimitError, match=r"\[mesh\] contact_spacing: the contact compliance of \d+ points"):
+        solve_section_static(tire)

@@ -1,0 +1,80 @@
+"""Benchmark of the cross-section FE tire beside the ring model, in one run (issue 13, item 8).
+
+Run on demand (never as a timed test)::
+
+    python benchmarks/bench_cross_section.py               # 3 repeats
+    python benchmarks/bench_cross_section.py --repeats 5
+
+Times, as ranges over the repeats (shared machines are noisy), of both tire models of the
+165/65 R14: building the model, the loaded static solve on the flat road, and the footprint
+FRFs 0-400 Hz every 1 Hz (cross-section: the footprint receptance and hub transfer of
+:mod:`roadnoise_utils.response.section_footprint`; ring: :func:`roadnoise_utils.response.frf.frf_visco`,
+the direct sweep of the same quantity). Peak memory by ``tracemalloc`` (Python allocations,
+numpy arrays included) of the last repeat of each step.
+"""
+
+from __future__ import annotations
+
+import argparse
+import resource
+import time
+import tracemalloc
+
+import numpy as np
+
+import roadnoise_utils as ru
+from roadnoise_utils.response import frf, section_footprint
+from roadnoise_utils.tire import section_static, static
+
+
+def timed(repeats: int, fn, *args, **kwargs) -> tuple[list[float], object, float]:
+    """Wall times of ``repeats`` calls, the last result and its peak traced memory (MB)."""
+    times, out = [], None
+    for i in range(repeats):
+        if i == repeats - 1:
+            tracemalloc.start()
+        t0 = time.perf_counter()
+        out = fn(*args, **kwargs)
+        times.append(time.perf_counter() - t0)
+    peak = tracemalloc.get_traced_memory()[1] / 1e6
+    tracemalloc.stop()
+    return times, out, peak
+
+
+def span(times: list[float]) -> str:
+    return f"{min(times):.2f} - {max(times):.2f}"
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--ring", default="165_65R14")
+    parser.add_argument("--cross-section", default="165_65R14_cross_section")
+    parser.add_argument("--repeats", type=int, default=3)
+    args = parser.parse_args()
+    freqs = np.arange(0.0, 401.0, 1.0)
+    rows = []
+
+    spec = ru.load_tire(args.cross_section)
+    t, tire, peak = timed(args.repeats, section_static.build_section_tire, spec)
+    rows.append(("cross-section", "build (mesh, harmonic matrices, inflation)", t, peak))
+    t, state, peak = timed(args.repeats, section_static.solve_section_static, tire)
+    rows.append(("cross-section", f"loaded static solve ({state.contact.sum()} points in contact)", t, peak))
+    t, _, peak = timed(args.repeats, section_footprint.footprint_frf, tire, state, freqs)
+    rows.append(("cross-section", "footprint receptance + hub transfer, 0-400 Hz at 1 Hz", t, peak))
+
+    ring = ru.load_tire(args.ring)
+    t, fet, peak = timed(args.repeats, ru.build_fet, ring)
+    rows.append(("ring", "build (8103 DOF)", t, peak))
+    t, ring_state, peak = timed(args.repeats, static.solve_static, fet)
+    rows.append(("ring", f"loaded static solve ({ring_state.contact.sum()} points in contact)", t, peak))
+    t, _, peak = timed(args.repeats, frf.frf_visco, fet, ring_state, freqs)
+    rows.append(("ring", "direct FRF sweep (H_i, H_tot), 0-400 Hz at 1 Hz", t, peak))
+
+    print(f"{'model':14s} {'step':62s} {'time (s)':>14s} {'peak (MB)':>10s}")
+    for model, step, t, peak in rows:
+        print(f"{model:14s} {step:62s} {span(t):>14s} {peak:10.0f}")
+    print(f"process peak resident memory: {resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024:.0f} MB")
+
+
+if __name__ == "__main__":
+    main()
