@@ -17,7 +17,9 @@ as the paper's FE model with the contact set frozen). At each frequency:
    points of tassello ``i`` together give :math:`H_i`.
 
 With the points held, a rim motion meets the dynamic stiffness
-:math:`G_H = D_{rim} - t^T C^{-1} t` (the moving hub's tire, paper Eq. 5-7).
+:math:`G_H = D_{rim} + t^T C^{-1} t` (the moving hub's tire, paper Eq. 5-7): ``D_rim`` with the
+tread free, plus the forces that hold the points (by reciprocity a unit rim motion moves the
+free points by ``t``).
 """
 
 from __future__ import annotations
@@ -31,8 +33,8 @@ import scipy.linalg as sla
 from scipy.interpolate import CubicSpline
 from threadpoolctl import threadpool_limits
 
-from ..tire.section_contact import patch_factor
-from ..tire.section_dynamics import harmonic_modes, reduce_harmonic, rim_transfer
+from ..tire.section_contact import angular_sums, patch_factor
+from ..tire.section_dynamics import direct_receptance, harmonic_modes, reduce_harmonic, rim_transfer
 from ..tire.section_static import SectionStaticState, SectionTire
 from ..tire.tasselli import Tasselli
 
@@ -81,8 +83,27 @@ class FootprintFRF:
 
     @property
     def G_H(self) -> np.ndarray:
-        """Dynamic stiffness at the rim with the footprint points held (N/m), (n_f,)."""
-        return self.free_rim - np.einsum("fp,fp->f", self.transfer, self.hub)
+        """Dynamic stiffness at the rim with the footprint points held (N/m), (n_f,): ``D_rim + t^T h``."""
+        return self.free_rim + np.einsum("fp,fp->f", self.transfer, self.hub)
+
+
+def contact_receptance(tire: SectionTire, static: SectionStaticState, frequency: float) -> np.ndarray:
+    """Vertical receptance between the contact points at one frequency (m/N), (P, P) complex.
+
+    Every harmonic solved directly (no reduction, no interpolation): the reference of
+    :func:`footprint_frf` and the input of a contact model of the user's own. Points in the
+    order of ``static.points``; a vertical force at point ``b`` moves point ``a`` by ``C[a, b]``.
+    """
+    grid, ops = tire.grid, tire.ops
+    omega = 2 * np.pi * float(frequency)
+    flex = np.stack([direct_receptance(ops, grid.dofs, n, omega) for n in range(tire.harmonics + 1)])
+    col, row = static.points
+    offsets = grid.dtheta * np.arange(-(grid.n_rows - 1), grid.n_rows)
+    sums = angular_sums(flex, offsets, grid.dtheta)
+    th = grid.theta[row]
+    offset_index = row[:, None] - row[None, :] + grid.n_rows - 1
+    projection = _Projection(col, th, col, th, offset_index, offset_index, grid.n_cols)
+    return projection.block(sums, projection.direct, projection.weights[0])
 
 
 def dynamic_harmonics(tire: SectionTire, f_max: float, cutoff: float) -> int:
@@ -247,7 +268,8 @@ class _Projection:
         ca, sa, cb, sb = np.cos(theta_a), np.sin(theta_a), np.cos(theta_b), np.sin(theta_b)
         return np.outer(ca, cb), -np.outer(ca, sb), -np.outer(sa, cb), np.outer(sa, sb)
 
-    def _block(self, sums, pick, weights):
+    def block(self, sums, pick, weights):
+        """The vertical receptance of the point pairs ``pick`` with the trigonometric ``weights``."""
         c = self.c
         out = weights[0] * sums[:, :c, :c][pick]
         out += weights[1] * sums[:, :c, c:][pick]
@@ -257,8 +279,8 @@ class _Projection:
 
     def even(self, sums: np.ndarray, paired: np.ndarray) -> np.ndarray:
         """Receptance of an even (fore-aft symmetric) field on the points with theta >= 0."""
-        comp = self._block(sums, self.direct, self.weights[0])
-        comp[:, paired] += self._block(sums, self.mirrored, self.weights[1])
+        comp = self.block(sums, self.direct, self.weights[0])
+        comp[:, paired] += self.block(sums, self.mirrored, self.weights[1])
         return comp
 
 

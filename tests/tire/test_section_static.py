@@ -6,9 +6,9 @@ import numpy as np
 import pytest
 
 from roadnoise_utils.repro import section_stages
-from roadnoise_utils.response.section_footprint import footprint_frf
-from roadnoise_utils.tire.section_contact import angular_sums, harmonic_flexibility, vertical_compliance
-from roadnoise_utils.tire.section_dynamics import direct_receptance, reduce_harmonic, ritz_error
+from roadnoise_utils.response.section_footprint import contact_receptance, footprint_frf
+from roadnoise_utils.tire.section_contact import harmonic_flexibility, vertical_compliance
+from roadnoise_utils.tire.section_dynamics import reduce_harmonic, ritz_error
 from roadnoise_utils.tire.section_static import section_summary, solve_section_static
 
 NAME = "165_65R14_cross_section"
@@ -76,26 +76,19 @@ def test_static_footprint_frf_is_the_vertical_stiffness(frf, flat):
 
 def test_footprint_frf_matches_a_direct_harmonic_sum(tire, flat, frf):
     """The reduced, interpolated FRF against every harmonic solved directly, contact points all kept (no mirror)."""
-    grid, ops = tire.grid, tire.ops
-    f = 80.0
-    omega = 2 * np.pi * f
-    flex = np.stack([direct_receptance(ops, grid.dofs, n, omega) for n in range(tire.harmonics + 1)])
-    col, row = flat.points
-    offsets = grid.dtheta * np.arange(-(grid.n_rows - 1), grid.n_rows)
-    sums = angular_sums(flex, offsets, grid.dtheta)
-    c = grid.n_cols
-    th = grid.theta[row]
-    k = row[:, None] - row[None, :] + grid.n_rows - 1
-    pick = (k, col[:, None], col[None, :])
-    comp = (
-        np.outer(np.cos(th), np.cos(th)) * sums[:, :c, :c][pick]
-        - np.outer(np.cos(th), np.sin(th)) * sums[:, :c, c:][pick]
-        - np.outer(np.sin(th), np.cos(th)) * sums[:, c:, :c][pick]
-        + np.outer(np.sin(th), np.sin(th)) * sums[:, c:, c:][pick]
-    )
+    comp = contact_receptance(tire, flat, 80.0)
     assert np.abs(comp - comp.T).max() < 1e-10 * np.abs(comp).max()  # (d) reciprocity at 80 Hz
     hub = np.linalg.solve(comp, frf.transfer[2])
     assert abs(frf.H_tot[2] / hub.sum() - 1) < 3e-3
+
+
+def test_moving_hub_stiffness_equals_the_footprint_stiffness_at_rest(frf, flat):
+    """Hub raised with the footprint held, or road raised with the hub held: the same static stiffness
+    (to the arc-spreading factor the hub transfer of a point carries once more)."""
+    spread = np.sinc(flat.grid.dtheta / (2 * np.pi))
+    assert frf.G_H[0].real / (frf.H_tot[0].real * spread) - 1 == pytest.approx(0.0, abs=1e-9)
+    # and the moving-hub stiffness falls through the first vertical resonance (inertia of the tire)
+    assert abs(frf.G_H[2]) < abs(frf.H_tot[2])
 
 
 def test_harmonic_convergence(tire):
