@@ -16,10 +16,10 @@ as the paper's FE model with the contact set frozen). At each frequency:
    hub force :math:`h^T d`; every point moving together gives :math:`H_{tot} = \\sum h`, the
    points of tassello ``i`` together give :math:`H_i`.
 
-With the points held, a rim motion meets the dynamic stiffness
-:math:`G_H = D_{rim} + t^T C^{-1} t` (the moving hub's tire, paper Eq. 5-7): ``D_rim`` with the
-tread free, plus the forces that hold the points (by reciprocity a unit rim motion moves the
-free points by ``t``).
+With the points held, a rim motion meets the dynamic stiffness :math:`D_{rim} + t^T C^{-1} t`
+(the moving hub's tire, paper Eq. 5-7): ``D_rim`` with the tread free, plus the forces that hold
+the points (by reciprocity a unit rim motion moves the free points by ``t``); ``G_H`` is its
+negative, the force on the hub, as for the ring model.
 """
 
 from __future__ import annotations
@@ -83,8 +83,11 @@ class FootprintFRF:
 
     @property
     def G_H(self) -> np.ndarray:
-        """Dynamic stiffness at the rim with the footprint points held (N/m), (n_f,): ``D_rim + t^T h``."""
-        return self.free_rim + np.einsum("fp,fp->f", self.transfer, self.hub)
+        """Force the tire exerts on the hub per unit hub displacement, footprint points held (N/m), (n_f,).
+
+        The convention of :attr:`.frf.FRFResult.G_H` (``-K_v`` at rest): ``-(D_rim + t^T h)``.
+        """
+        return -(self.free_rim + np.einsum("fp,fp->f", self.transfer, self.hub))
 
 
 def contact_receptance(tire: SectionTire, static: SectionStaticState, frequency: float) -> np.ndarray:
