@@ -226,7 +226,10 @@ ring_frf = ru.stages.frf_visco(ring_name, "flat")
 
 # %%
 # Fig. 5 analogue: |H_tot| of the two tire models, with the paper's first vertical resonance
-ax = ru.figures.fe_tire_model.plot_htot(footprint, f_max=400.0, label="H_tot, cross-section model")
+f_paper = ru.claims.paper_value("first_vertical_resonance")  # data/paper/claims.toml
+ax = ru.figures.fe_tire_model.plot_htot(
+    footprint, f_max=400.0, label="H_tot, cross-section model", paper={"paper: first vertical resonance": f_paper}
+)
 ax.plot(ring_frf.freqs, np.abs(ring_frf.H_tot) / 1e3, "--", label="H_tot, ring model")
 ax.legend()
 plt.show()
@@ -240,6 +243,11 @@ print(f"H_tot(0) / K_v - 1 = {footprint.H_tot[0].real / (flat.vertical_stiffness
 print(f"force balance, n = 1 rim reaction / load - 1 = {flat.hub_force / (flat.load * spread) - 1:.1e}")
 
 # %% [markdown]
+# The cross-section tire puts most of the footprint's response into the first vertical mode:
+# its higher vertical modes are damped more (their pre-stress share carries the layer loss)
+# and the solid tread spreads the contact stiffness, where the ring's tread springs and strips
+# leave sharp peaks up to 250 Hz.
+#
 # ## 7. Calibration from construction data
 #
 # Targets of DESIGN section 2 for the 165/65 R14 (``data/calibration/165_65R14.toml``; the
