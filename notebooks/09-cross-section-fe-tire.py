@@ -144,9 +144,9 @@ print(f"largest relative difference of the vertical receptance: {section_checks.
 # ## 4. The free tire: dispersion
 #
 # Each harmonic's natural frequencies with the rim clamped and the tread free: the tire's
-# dispersion. The radial branch rises ~25 Hz per harmonic above ``n = 3``, where the belt's
-# bending and the pressure's tension share the stiffness; the lateral branch (the belt rocking
-# on the sidewalls) runs beside it. The dashed line is the ring model's closed-form radial
+# dispersion. The radial branch rises ~25 Hz per harmonic for ``n = 3..7`` and ~16 Hz per
+# harmonic by ``n = 10..12``, where the belt's bending and the pressure's tension share the
+# stiffness; the lateral branch (the belt rocking on the sidewalls) runs beside it. The dashed line is the ring model's closed-form radial
 # branch (notebook 01), a tire with the same targets built from calibrated springs.
 #
 # Published measured frequencies for a similar tire could not be read on this machine (no
@@ -212,12 +212,12 @@ plt.show()
 # ## 6. Dynamics at the footprint
 #
 # With the contact points tied to the road (the linearisation of the paper's FE model), the hub
-# force per unit road displacement at each of the ~890 points, :math:`h(\omega)`, gives
-# :math:`H_{tot} = \sum h` and every tassello's :math:`H_i` — the input of notebooks 02-07. It
-# is computed from the harmonic sum at every frequency, 0-400 Hz every 1 Hz: harmonics with a
-# mode below 800 Hz are Ritz-reduced (static shapes at 0 and 400 Hz plus their modes,
-# ≤ 3e-3 of the direct solve), the quasi-static rest is computed on a grid in ``n`` and
-# frequency and interpolated.
+# force per unit road displacement at each of the ~890 points, $h(\omega)$, gives
+# $H_{tot} = \sum h$ and every tassello's $H_i$ — the input of notebooks 02-07. It
+# is computed from the harmonic sum at every frequency, 0-400 Hz every 1 Hz: every harmonic is
+# Ritz-reduced (static shapes at 0 and 400 Hz, plus its modes below 1 kHz; ≤ 3e-3 of the direct
+# solve); the quasi-static ones (no mode below 1 kHz, n > ~50) are sampled in ``n`` and
+# interpolated. The tests compare the result with every harmonic solved directly (5 and 80 Hz).
 
 # %%
 # NBVAL_IGNORE_OUTPUT
@@ -244,17 +244,38 @@ print(f"force balance, n = 1 rim reaction / load - 1 = {flat.hub_force / (flat.l
 
 # %% [markdown]
 # The cross-section tire puts most of the footprint's response into the first vertical mode:
-# its higher vertical modes are damped more (their pre-stress share carries the layer loss)
-# and the solid tread spreads the contact stiffness, where the ring's tread springs and strips
-# leave sharp peaks up to 250 Hz.
+# its solid tread spreads the contact stiffness and its higher vertical modes carry the same
+# pneumatic loss as the first (next section), where the ring's tread springs and strips leave
+# sharp peaks up to 250 Hz.
 #
-# ## 7. Calibration from construction data
+# ## 7. Where the damping comes from
+#
+# The pneumatic stiffness (pre-stress and pressure load stiffness together) stores 65-80 % of
+# the strain energy of the first modes. Lossless, the layers alone (their compound laws, tan
+# delta 0.05-0.12 at 80 Hz) give ζ ≈ 0.01-0.02, the under-damping the ring model had before
+# issue 12. The tire file gives the pneumatic stiffness the carcass law (``[pneumatic]
+# compound``), the ring model's choice for its pneumatic foundation; that is a model of a loss
+# the linear layers do not produce (cord-rubber hysteresis of the plies carrying the pressure),
+# not a material property: set it to ``"none"`` to see the tire without it.
+
+# %%
+# NBVAL_CHECK_OUTPUT
+# Strain-energy shares and modal-strain-energy damping of the first radial free-tire modes (80 Hz moduli)
+print(chapter.damping_sources(tire).to_string(float_format=lambda v: f"{v:.3f}"))
+
+# %% [markdown]
+# ## 8. Calibration from construction data
 #
 # Targets of DESIGN section 2 for the 165/65 R14 (``data/calibration/165_65R14.toml``; the
 # cross-section file shares the size's targets). The construction values were not tuned to
-# them — except the shoulder rounding and the layer laws, which are material data. The
-# vertical stiffness misses: the linear tire about its inflated state is ~18 % stiffer than the
-# typical measured stiffness of this size (what the model neglects is listed in section 5).
+# them. Two choices were made with the targets in view: the rounded shoulder (3 mm over
+# 12 mm, which removes line loads at the tread edges) and the pneumatic law (section 7),
+# whose compound laws were themselves calibrated in the ring model (issue 12) — so ζ1 is a
+# calibration, not a prediction. The tangent vertical stiffness (the slope of the
+# load-deflection curve, what the ring model reports) misses: 18 % above the top of the range,
+# 33 % above its middle, while the secant load / deflection is inside it. We have not
+# identified the mechanism; candidates are what the linearisation neglects (section 5) and the
+# clamped beads (the real bead rotates on the rim flange).
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -263,7 +284,7 @@ calibration = ru.experiments.calibration_table(tire_name)
 print(calibration[["target", "obtained", "unit", "ok"]].to_string(float_format=lambda v: f"{v:.3f}"))
 
 # %% [markdown]
-# ## 8. Convergence
+# ## 9. Convergence
 #
 # The loaded tire against the number of harmonics and of crown elements (the contact grid
 # follows the crown nodes). Deflection and K_v move by less than 1 %; the footprint width is
@@ -275,7 +296,7 @@ print(calibration[["target", "obtained", "unit", "ok"]].to_string(float_format=l
 print(chapter.convergence_table(tire_name).to_string(float_format=lambda v: f"{v:.3f}"))
 
 # %% [markdown]
-# ## 9. Paper vs ours
+# ## 10. Paper vs ours
 #
 # | quantity | paper's FET (Fig. 3) | cross-section model |
 # |---|---|---|

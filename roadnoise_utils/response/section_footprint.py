@@ -118,6 +118,17 @@ def dynamic_harmonics(tire: SectionTire, f_max: float, cutoff: float) -> int:
     return n - 1
 
 
+def _dynamic_reductions(tire: SectionTire, f_max: float, cutoff: float) -> list:
+    """Reduced harmonics 0, 1, 2, ... with their modes, up to the first (n >= 2) with no mode below ``cutoff``."""
+    reduced = []
+    for n in range(tire.harmonics + 1):
+        red = reduce_harmonic(tire.ops, tire.grid.dofs, n, f_max, cutoff)
+        reduced.append(red)
+        if n >= 2 and red.n_modes == 0:
+            break
+    return reduced
+
+
 def _sample_harmonics(first: int, last: int, count: int = 24) -> np.ndarray:
     """Harmonics sampled densely near ``first`` and sparsely towards ``last`` (interpolation nodes)."""
     return np.unique(np.round(np.geomspace(first, last, count)).astype(int))
@@ -186,8 +197,7 @@ def footprint_frf(
     tire: SectionTire,
     static: SectionStaticState,
     freqs: np.ndarray,
-    cutoff_factor: float = 2.0,
-    interpolation_step: float = 25.0,
+    cutoff_factor: float = 2.5,
     progress: bool = False,
 ) -> FootprintFRF:
     """The footprint's hub-force transfer of a loaded cross-section tire (see the module notes).
@@ -198,9 +208,9 @@ def footprint_frf(
     freqs : ndarray
         Frequencies (Hz), ascending, >= 0.
     cutoff_factor : float
-        Modes up to ``cutoff_factor * max(freqs)`` carry the inertia.
-    interpolation_step : float
-        Frequency step (Hz) of the quasi-static harmonics' interpolation grid.
+        Harmonics with a mode below ``cutoff_factor * max(freqs)`` are reduced with those modes;
+        at 2.5 the first harmonic without one is within 1.1e-3 of its direct solve at f_max
+        (4e-3 at 2.0).
     """
     freqs = np.asarray(freqs, float)
     f_max = float(freqs.max())
@@ -208,10 +218,10 @@ def footprint_frf(
     c = grid.n_cols
     cutoff = cutoff_factor * f_max
     with threadpool_limits(1):
-        n_dyn = dynamic_harmonics(tire, f_max, cutoff)
-        dynamic = [reduce_harmonic(ops, grid.dofs, n, f_max, cutoff) for n in range(n_dyn + 1)]
+        dynamic = _dynamic_reductions(tire, f_max, cutoff)
+        n_dyn = len(dynamic) - 1
         offsets = _offsets(static)
-        n_high, basis, high = _high_harmonics(tire, n_dyn, f_max, interpolation_step)
+        n_high, basis, high = _high_harmonics(tire, n_dyn, f_max)
         rim = rim_transfer(ops, grid.dofs, 2 * np.pi * freqs)
     col, row = static.points
     th = grid.theta[row]
@@ -234,16 +244,17 @@ def footprint_frf(
     projection = _Projection(col[keep], th[keep], col[partner[paired]], th[partner[paired]], direct, mirrored, c)
     flat = np.empty((cos.shape[1], BLOCK, 4 * c * c), complex)
 
-    def fill(n: int, omegas: np.ndarray) -> None:
-        flat[n, : omegas.size] = dynamic[n].receptance(ops.laws, omegas).reshape(omegas.size, -1)
+    harmonics = dynamic + high  # dynamic ones, then the sampled quasi-static ones (rows of flat)
+
+    def fill(k: int, omegas: np.ndarray) -> None:
+        flat[k, : omegas.size] = harmonics[k].receptance(ops.laws, omegas).reshape(omegas.size, -1)
 
     workers = ThreadPoolExecutor(max_workers=2)  # LAPACK releases the GIL: two harmonics at a time
     for start in blocks:
         part = slice(start, min(start + BLOCK, freqs.size))
         omegas = 2 * np.pi * freqs[part]
         with threadpool_limits(1):
-            list(workers.map(fill, range(n_dyn + 1), repeat(omegas)))
-        flat[n_dyn + 1 :, : omegas.size] = high(freqs[part])
+            list(workers.map(fill, range(len(harmonics)), repeat(omegas)))
         sums = _angular(flat[:, : omegas.size], cos, sin, c)
         for k, f_index in enumerate(range(part.start, part.stop)):
             # an even displacement field: h(j, -a) = h(j, a); the mirrored column adds to its partner
@@ -287,26 +298,18 @@ class _Projection:
         return comp
 
 
-def _high_harmonics(tire: SectionTire, n_dyn: int, f_max: float, step: float) -> tuple:
-    """The quasi-static harmonics ``n_dyn + 1 .. N``: sampled in ``n``, splined in frequency.
+def _high_harmonics(tire: SectionTire, n_dyn: int, f_max: float) -> tuple:
+    """The quasi-static harmonics ``n_dyn + 1 .. N``, sampled in ``n`` and reduced (no modes).
 
-    Returns the harmonics ``n_all``, the interpolation weights ``basis`` (n_all, n_samples) and a
-    function of frequency (Hz) giving the sampled receptances (n_samples, n_f, 4 c^2).
+    Returns the harmonics ``n_all``, the interpolation weights ``basis`` (n_all, n_samples) and
+    the reduced sampled harmonics, evaluated at every frequency like the dynamic ones (the
+    compound laws have a cusp at 0 Hz, where a spline in frequency would be off by a few %).
     """
     grid, ops = tire.grid, tire.ops
-    last = tire.harmonics
-    n_all = np.arange(n_dyn + 1, last + 1)
+    n_all = np.arange(n_dyn + 1, tire.harmonics + 1)
     if n_all.size == 0:
-        return n_all, np.zeros((0, 0)), lambda f: np.zeros((0, len(f), (2 * grid.n_cols) ** 2), complex)
-    f_grid = np.linspace(0.0, f_max, max(4, int(np.ceil(f_max / step)) + 1))
-    sampled = _sample_harmonics(n_dyn + 1, last)
-    values = np.stack(
-        [
-            reduce_harmonic(ops, grid.dofs, n, f_max, None)
-            .receptance(ops.laws, 2 * np.pi * f_grid)
-            .reshape(f_grid.size, -1)
-            for n in sampled
-        ]
-    )
+        return n_all, np.zeros((0, 0)), []
+    sampled = _sample_harmonics(n_dyn + 1, tire.harmonics)
+    reduced = [reduce_harmonic(ops, grid.dofs, n, f_max, None) for n in sampled]
     basis = CubicSpline(sampled, np.eye(sampled.size), axis=0)(n_all) if sampled.size > 1 else np.ones((1, 1))
-    return n_all, basis, CubicSpline(f_grid, values, axis=1)
+    return n_all, basis, reduced

@@ -148,9 +148,15 @@ class CrossSectionSpec:
     construction: dict[str, tuple[str, ...]]
     tasselli: Tassellation
     compounds: dict[str, Compound]
+    pneumatic: str = "none"
     source: str = field(default="", metadata={"identity": False})
 
     model = "cross-section"
+
+    @property
+    def pneumatic_law(self) -> str | None:
+        """Compound whose law scales the pneumatic stiffness (``[pneumatic] compound``), None if lossless."""
+        return None if self.pneumatic == "none" else self.pneumatic
 
     def stack(self, region: str) -> list[tuple[str, RubberLayer | CordLayer | TreadLayer]]:
         """Layers of one stack (:data:`STACKS`), inside out."""
@@ -189,6 +195,7 @@ def to_dict(spec: CrossSectionSpec) -> dict[str, Any]:
         kind = next(k for k, cls in LAYER_KINDS.items() if isinstance(layer, cls))
         out["layers"][name] = {"kind": kind, **dataclasses.asdict(layer)}
     out["construction"] = {k: list(v) for k, v in spec.construction.items()}
+    out["pneumatic"] = {"compound": spec.pneumatic}
     out["compounds"] = {k: dataclasses.asdict(v) for k, v in sorted(spec.compounds.items())}
     return out
 
@@ -222,7 +229,7 @@ def _numeric_view(cls: type) -> type:
 
 def from_dict(data: dict[str, Any], source: str = "<dict>") -> CrossSectionSpec:
     """Validate nested data (the TOML layout) and build a :class:`CrossSectionSpec`."""
-    expected = {"tire", "compounds", "layers", "construction", *SECTIONS}
+    expected = {"tire", "compounds", "layers", "construction", "pneumatic", *SECTIONS}
     missing = sorted(expected - set(data))
     if missing:
         raise ValueError(f"{source}: missing section(s) {['[' + m + ']' for m in missing]}")
@@ -240,8 +247,20 @@ def from_dict(data: dict[str, Any], source: str = "<dict>") -> CrossSectionSpec:
     }
     layers = {key: _layer(key, value, source, compounds) for key, value in data["layers"].items()}
     construction = _construction(data["construction"], layers, source)
+    pneumatic = data["pneumatic"].get("compound") if isinstance(data["pneumatic"], dict) else None
+    if set(data["pneumatic"]) != {"compound"} or (pneumatic != "none" and pneumatic not in compounds):
+        raise ValueError(
+            f"{source}: [pneumatic] compound = {pneumatic!r}: valid values are 'none' (a lossless pneumatic "
+            f"stiffness) or a [compounds.*] name {sorted(compounds)}"
+        )
     spec = CrossSectionSpec(
-        name=name, layers=layers, construction=construction, compounds=compounds, source=source, **sections
+        name=name,
+        layers=layers,
+        construction=construction,
+        compounds=compounds,
+        pneumatic=pneumatic,
+        source=source,
+        **sections,
     )
     _check_consistency(spec, source)
     return spec

@@ -17,8 +17,9 @@ direction and the meridian tangent. The model's axes are ``(r, theta, y)``. Voig
 A ply at cord angle ``+beta`` alone couples normal strains to the in-plane shear
 ``gamma_ts``; the belt's plies come in ``+beta / -beta`` pairs, so each angled ply is given the
 balanced (``+beta`` and ``-beta`` averaged) stiffness. This keeps the membrane stiffness of the
-pair exact and neglects its bending-twisting coupling (D16), which lets the symmetric and
-antisymmetric circumferential harmonics decouple (:mod:`.waveguide`).
+pair exact and neglects its extension-twist coupling (B16, B26 of the antisymmetric
+``[+beta / -beta]`` pair; its D16 is zero), which lets the symmetric and antisymmetric
+circumferential harmonics decouple (:mod:`.waveguide`).
 """
 
 from __future__ import annotations

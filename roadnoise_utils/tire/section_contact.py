@@ -14,7 +14,7 @@ trigonometric pattern of the symmetric and antisymmetric sets: ``cos`` for ``rr`
 ``tt``, ``-sin`` for ``rt`` (radial response to a tangential force) and ``+sin`` for ``tr``.
 The vertical compliance of the points follows by projecting on ``e_z``. Contact is vertical and
 frictionless while loading, solved with the same primal active set as the ring model
-(:func:`.static.active_set`); the tire is linear about its inflated state.
+(:func:`.active_set.active_set`); the tire is linear about its inflated state.
 """
 
 from __future__ import annotations

@@ -5,8 +5,8 @@ For every harmonic ``n`` the receptance at the contact DOF,
 moduli of every compound (the paper's FETvisco), is evaluated in a Ritz basis of the harmonic:
 
 * the static responses to unit loads at the contact DOF with the storage moduli at the band's
-  two ends (0 Hz and ``f_max``): they span the static shapes of every compound mix, so the
-  reduction is exact at 0 Hz;
+  two ends (0 Hz and ``f_max``): exact at 0 Hz, and close to the static shapes of the compound
+  mixes in between (five compounds vary independently, so not exactly: ritz_error measures it);
 * the undamped modes of the harmonic below ``cutoff`` (storage moduli at ``f_max / 2``); none
   above the harmonic whose first mode exceeds ``cutoff`` (quasi-static harmonics, whose
   inertia the static shapes still carry).
@@ -84,7 +84,7 @@ def _free_positions(ops: HarmonicOperators, dofs: np.ndarray) -> np.ndarray:
 def _project(ops: HarmonicOperators, n: int, basis: np.ndarray, position: np.ndarray) -> Projected:
     free = ops.free
     w = harmonic_weight(n)
-    compounds = {name: basis.T @ ((w * ops.compound(name, n)[free][:, free]) @ basis) for name in ops.elastic}
+    compounds = {name: basis.T @ ((w * ops.compound(name, n)[free][:, free]) @ basis) for name in ops.scaled}
     gas = basis.T @ ((w * ops.gas(n)[free][:, free]) @ basis)
     mass = basis.T @ ((w * ops.mass[free][:, free]) @ basis)
     return Projected(compounds=compounds, gas=gas, mass=mass, contact=basis[position].T)

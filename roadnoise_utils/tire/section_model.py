@@ -5,15 +5,17 @@ polynomials in the harmonic number ``n`` (:mod:`.waveguide`), solves the inflati
 beads clamped, linear) for the pre-stress and returns a :class:`HarmonicOperators` from which
 any harmonic's stiffness and mass cost a few sparse additions:
 
-.. math:: K_n(\\omega) = w_n\\Big[\\sum_c g_c(\\omega)\\,\\big(K_c(n) + K_{\\sigma,c}(n)\\big) - p\\,H(n)\\Big],
-          \\qquad M_n = w_n M.
+.. math:: K_n(\\omega) = w_n\\Big[\\sum_c g_c(\\omega)\\,K_c(n) + g_p(\\omega)\\,K_{pn}(n)\\Big],
+          \\qquad K_{pn} = K_\\sigma - p\\,H,\\qquad M_n = w_n M.
 
-Damping comes from the layers that strain (DESIGN section 2): each layer's law scales its
-elastic stiffness ``K_c`` *and* the geometric stiffness of the pre-stress it carries,
-``K_sigma,c``. The pre-stress is carried by the cord plies (the carcass on the sidewalls, the belt
-at the crown); as they rotate under the pressure their rubber matrix shears between the cords,
-which is the loss the ring model gives its pneumatic foundation. Only the follower-pressure
-load stiffness ``-p H`` (the work of the gas) is lossless.
+``K_pn`` is the *pneumatic* stiffness: the geometric stiffness of the inflation pre-stress
+``K_sigma`` and the follower-pressure load stiffness ``-p H``, always together (each alone
+resists rigid rotations; together they do not). Its law ``g_p`` is the modelling choice of the
+tire file's ``[pneumatic] compound``: ``"none"`` keeps it lossless (``g_p = 1``), a compound
+name (the carcass) gives it that law — the ring model's pneumatic foundation (issue 12): the
+cord plies that carry the pressure flex as the tire deforms and their rubber matrix shears
+between the cords. It is a model of a loss the linear layers do not produce, not a material
+property; notebook 09 shows both.
 
 The inflation pre-stress comes from a *linear* solve of the layered solid under the pressure,
 about the given (inflated) geometry: it carries the membrane forces of the cord layers (the
@@ -51,8 +53,8 @@ class HarmonicOperators:
     mesh : SectionMesh
     elastic : dict of str to tuple of 3 csr_matrix
         ``(K0, K1, K2)`` of each compound at its static modulus (N/m per radian).
-    geometric : dict of str to tuple of 3 csr_matrix
-        Geometric stiffness of the inflation pre-stress carried by each compound's layers, same form.
+    geometric : tuple of 3 csr_matrix
+        Geometric stiffness of the inflation pre-stress, same form.
     pressure : tuple of 2 csr_matrix
         Load stiffness of the follower pressure, ``-p (H0 + n H1)``.
     mass : csr_matrix
@@ -66,11 +68,13 @@ class HarmonicOperators:
         Displacement of the inflation solve (m), ``n = 0``.
     stress : ndarray (q, 6)
         Inflation pre-stress at the quadrature points (Pa), Voigt ``[rr, tt, yy, ty, ry, rt]``.
+    pneumatic_law : str or None
+        Compound whose law scales the pneumatic stiffness; ``None``: lossless.
     """
 
     mesh: SectionMesh
     elastic: dict[str, tuple[sp.csr_matrix, sp.csr_matrix, sp.csr_matrix]]
-    geometric: dict[str, tuple[sp.csr_matrix, sp.csr_matrix, sp.csr_matrix]]
+    geometric: tuple[sp.csr_matrix, sp.csr_matrix, sp.csr_matrix]
     pressure: tuple[sp.csr_matrix, sp.csr_matrix]
     mass: sp.csr_matrix
     fixed: np.ndarray
@@ -78,6 +82,7 @@ class HarmonicOperators:
     pressure_value: float
     inflation: np.ndarray
     stress: np.ndarray
+    pneumatic_law: str | None = None
 
     @property
     def n_dof(self) -> int:
@@ -88,27 +93,36 @@ class HarmonicOperators:
         """DOF not clamped to the rim."""
         return np.setdiff1d(np.arange(self.n_dof), self.fixed)
 
-    def gas(self, n: int) -> sp.csr_matrix:
-        """Lossless stiffness at harmonic ``n``: the follower-pressure load stiffness (without ``w_n``)."""
+    def pneumatic(self, n: int) -> sp.csr_matrix:
+        """Pneumatic stiffness at harmonic ``n``, pre-stress and pressure load together (without ``w_n``)."""
+        k0, k1, k2 = self.geometric
         p0, p1 = self.pressure
-        return (p0 + n * p1).tocsr()
+        return (k0 + p0 + n * (k1 + p1) + n * n * k2).tocsr()
+
+    def gas(self, n: int) -> sp.csr_matrix:
+        """Lossless stiffness at harmonic ``n`` (without ``w_n``): the pneumatic stiffness unless a law scales it."""
+        return self.pneumatic(n) if self.pneumatic_law is None else sp.csr_matrix(self.mass.shape)
+
+    @property
+    def scaled(self) -> tuple[str, ...]:
+        """Compounds whose laws scale a part of the stiffness (the layers', and the pneumatic law)."""
+        names = tuple(self.elastic)
+        return names if self.pneumatic_law in (None, *names) else (*names, self.pneumatic_law)
 
     def compound(self, name: str, n: int) -> sp.csr_matrix:
-        """Static stiffness of one compound's layers at harmonic ``n``: elastic and pre-stress (without ``w_n``)."""
-        k0, k1, k2 = self.elastic[name]
-        g0, g1, g2 = self.geometric[name]
-        return (k0 + g0 + n * (k1 + g1) + n * n * (k2 + g2)).tocsr()
-
-    def prestress(self, n: int) -> sp.csr_matrix:
-        """Geometric stiffness of the whole inflation pre-stress at harmonic ``n`` (without ``w_n``)."""
-        return sum(
-            ((g0 + n * g1 + n * n * g2) for g0, g1, g2 in self.geometric.values()), sp.csr_matrix(self.mass.shape)
-        ).tocsr()
+        """Static stiffness scaled by one compound's law at harmonic ``n`` (without ``w_n``)."""
+        total = sp.csr_matrix(self.mass.shape)
+        if name in self.elastic:
+            k0, k1, k2 = self.elastic[name]
+            total = k0 + n * k1 + n * n * k2
+        if name == self.pneumatic_law:
+            total = total + self.pneumatic(n)
+        return total.tocsr()
 
     def stiffness(self, n: int, omega: float = 0.0, storage_only: bool = False) -> sp.csr_matrix:
         """``K_n(omega)`` (N/m), all DOF, weight ``w_n`` included; complex unless ``storage_only``."""
         total = self.gas(n).astype(float if storage_only else complex)
-        for name in self.elastic:
+        for name in self.scaled:
             g = complex(self.laws[name].ratio(omega))
             total = total + (g.real if storage_only else g) * self.compound(name, n)
         return (harmonic_weight(n) * total).tocsr()
@@ -135,6 +149,7 @@ def harmonic_operators(
     inflation_pressure: float,
     fixed: np.ndarray | None = None,
     prestress: np.ndarray | None = None,
+    pneumatic_law: str | None = None,
 ) -> HarmonicOperators:
     """Integrate the harmonic matrices and the inflation pre-stress of a cross-section mesh.
 
@@ -149,8 +164,10 @@ def harmonic_operators(
         DOF clamped to the rim; default every DOF of the two bead stations.
     prestress : ndarray (q, 6), optional
         A given pre-stress (Pa) instead of the inflation solve (verification of thin rings).
+    pneumatic_law : str, optional
+        Compound whose law scales the pneumatic stiffness (see the module notes); lossless if None.
     """
-    missing = sorted(set(mesh.points.compounds) - set(laws))
+    missing = sorted((set(mesh.points.compounds) | ({pneumatic_law} - {None})) - set(laws))
     if missing:
         raise ValueError(f"no modulus law for compound(s) {missing}")
     pts = mesh.points
@@ -177,10 +194,7 @@ def harmonic_operators(
         inflation, stress = _inflate(elastic, dv, fixed, bc, dofs, pts, inflation_pressure, n_dof)
     else:
         inflation, stress = np.zeros(n_dof), np.asarray(prestress, float)
-    geometric = {}
-    for index, name in enumerate(pts.compounds):
-        sel = pts.compound == index
-        geometric[name] = _geometric_stiffness(_subset(geo, sel), stress[sel], pts.element[sel], dofs, n_dof)
+    geometric = _geometric_stiffness(geo, stress, pts.element, dofs, n_dof)
     p = inflation_pressure
     return HarmonicOperators(
         mesh=mesh,
@@ -193,12 +207,8 @@ def harmonic_operators(
         pressure_value=p,
         inflation=inflation,
         stress=stress,
+        pneumatic_law=pneumatic_law,
     )
-
-
-def _subset(geo, sel):
-    """The point geometry of a subset of the quadrature points."""
-    return type(geo)(**{name: getattr(geo, name)[sel] for name in ("shape", "d_r", "d_y", "radius", "volume")})
 
 
 def _inflate(elastic, dv, fixed, bc, dofs, pts, pressure, n_dof):

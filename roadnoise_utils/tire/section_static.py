@@ -3,9 +3,12 @@
 The tire is linear about its inflated state (pre-stress and pressure load stiffness included,
 :mod:`.section_model`); loading adds one-sided vertical, frictionless contact on the contact
 grid (:mod:`.section_contact`), solved by the primal active set shared with the ring model
-(:func:`.static.active_set`). This neglects what a nonlinear FE solve of the loading would
+(:func:`.active_set.active_set`). This neglects what a nonlinear FE solve of the loading would
 add: the change of the pre-stress and of the geometry with the 20-25 mm deflection (the
-sidewalls' bulge), friction in the footprint, and the tread's own nonlinearity.
+sidewalls' bulge), friction in the footprint, the tread's own nonlinearity, the horizontal
+motion of the contact points (the gap is measured vertically at their undeformed positions)
+and the compression of the cavity's air (the pressure stays constant); the rubber is nearly
+incompressible at Poisson 0.49 in displacement elements.
 
 The hub force is computed independently of the contact solve, as the rim's reaction in the
 ``n = 1`` harmonic (:func:`.section_dynamics.rim_transfer`); it equals the load to round-off
@@ -50,7 +53,7 @@ class SectionTire:
 def build_section_tire(spec: CrossSectionSpec) -> SectionTire:
     """Mesh the cross-section, integrate its harmonic matrices and inflate it."""
     mesh, line = section_mesh(spec)
-    ops = harmonic_operators(mesh, spec.laws(), spec.operating.inflation_pressure)
+    ops = harmonic_operators(mesh, spec.laws(), spec.operating.inflation_pressure, pneumatic_law=spec.pneumatic_law)
     grid = contact_grid(mesh, line, spec.mesh.contact_spacing, spec.geometry.outer_radius)
     return SectionTire(spec=spec, mesh=mesh, line=line, ops=ops, grid=grid)
 

@@ -81,3 +81,19 @@ def test_inflated_torus_carries_the_membrane_forces():
 def test_harmonic_sum_equals_a_direct_three_d_assembly():
     """(e) Receptance of a clamped band under vertical point forces: harmonic sum = 3-D solve to 1e-6."""
     assert section_checks.three_d_check() < 1e-6
+
+
+def test_the_pneumatic_stiffness_leaves_rigid_rotations_free():
+    """Pre-stress and pressure load stiffness each resist a rigid tilt of an inflated ring; together they do not
+    (why they always share one law, section_model)."""
+    radius, width, h, tension = 0.3, 0.1, 0.002, 2000.0
+    mesh = band(radius, width, h)
+    inner = radius - h / 2
+    stress = np.zeros((mesh.points.element.size, 6))
+    stress[:, 1] = tension / (width * h) * inner / radius  # hoop force balancing the pressure on the inner face
+    ops = harmonic_operators(mesh, LAW, tension / (radius * width), fixed=np.array([], int), prestress=stress)
+    tilt = np.zeros(mesh.n_dof)  # rotation about the horizontal axis: a_r = -y, a_theta = y, a_y = r (n = 1)
+    tilt[0::3], tilt[1::3], tilt[2::3] = -mesh.y, mesh.y, mesh.r
+    k0, k1, k2 = ops.geometric
+    geometric = tilt @ ((k0 + k1 + k2) @ tilt)
+    assert abs(tilt @ (ops.pneumatic(1) @ tilt)) < 1e-2 * abs(geometric)
