@@ -33,6 +33,8 @@ import scipy.linalg as sla
 from scipy.interpolate import CubicSpline
 from threadpoolctl import threadpool_limits
 
+from .. import guards
+from ..tire import cross_section
 from ..tire.section_contact import angular_sums, patch_factor
 from ..tire.section_dynamics import direct_receptance, harmonic_modes, reduce_harmonic, rim_transfer
 from ..tire.section_static import SectionStaticState, SectionTire
@@ -116,6 +118,26 @@ def dynamic_harmonics(tire: SectionTire, f_max: float, cutoff: float) -> int:
     while n < tire.harmonics and harmonic_modes(tire.ops, n, omega, cutoff, max_modes=4).shape[1]:
         n += 1
     return n - 1
+
+
+def _check_inputs(tire: SectionTire, static: SectionStaticState, freqs) -> np.ndarray:
+    """Refuse frequencies that are not finite, ascending and >= 0, a static state of another tire,
+    and evaluation blocks above the memory limit; warn above 2 kHz (the model's band is 400 Hz)."""
+    freqs = np.asarray(freqs, float)
+    if freqs.ndim != 1 or freqs.size == 0 or not np.all(np.isfinite(freqs)) or freqs.min() < 0:
+        raise ValueError("freqs must be a non-empty 1-D array of finite frequencies >= 0 Hz")
+    if np.any(np.diff(freqs) <= 0):
+        raise ValueError("freqs must be strictly increasing")
+    if freqs.max() <= 0:
+        raise ValueError("freqs must reach above 0 Hz (the band sets the Ritz bases)")
+    if freqs.max() > 2000.0:
+        guards.warn(f"freqs reach {freqs.max():g} Hz: the cross-section tire is built for 0-400 Hz")
+    if static.tire is not None and cross_section.to_dict(static.tire) != cross_section.to_dict(tire.spec):
+        raise ValueError("static was solved for another tire than this one; solve the static state of this tire")
+    _, rows = np.nonzero(static.contact)
+    n_bytes = 16.0 * BLOCK * (2 * (rows.max() - rows.min()) + 1) * (2 * tire.grid.n_cols) ** 2 * 3
+    guards.check_memory(n_bytes, "the footprint FRF's angular sums", "[mesh] contact_spacing, crown_elements")
+    return freqs
 
 
 def _dynamic_reductions(tire: SectionTire, f_max: float, cutoff: float) -> list:
@@ -212,7 +234,7 @@ def footprint_frf(
         at 2.5 the first harmonic without one is within 1.1e-3 of its direct solve at f_max
         (4e-3 at 2.0).
     """
-    freqs = np.asarray(freqs, float)
+    freqs = _check_inputs(tire, static, freqs)
     f_max = float(freqs.max())
     grid, ops = tire.grid, tire.ops
     c = grid.n_cols

@@ -91,3 +91,16 @@ def test_a_contact_grid_too_fine_for_memory_is_refused_before_the_solve(monkeypa
 
     with pytest.raises(ResourceLimitError, match=r"\[mesh\] contact_spacing: the contact compliance of \d+ points"):
         solve_section_static(tire)
+
+
+def test_footprint_frf_refuses_bad_frequencies_and_another_tires_state():
+    from roadnoise_utils.response.section_footprint import footprint_frf
+
+    tire = section_stages.section_tire(NAME)
+    flat = section_stages.section_static(NAME)
+    for bad in ([], [0.0, np.nan], [-1.0, 10.0], [10.0, 5.0]):
+        with pytest.raises(ValueError, match="freqs must"):
+            footprint_frf(tire, flat, np.array(bad))
+    other = section_stages.section_tire(ru.load_tire(NAME).replace(**{"layers.tread.youngs_modulus": 6e6}))
+    with pytest.raises(ValueError, match="another tire"):
+        footprint_frf(other, flat, np.array([0.0, 10.0]))
