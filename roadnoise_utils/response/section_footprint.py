@@ -5,10 +5,10 @@ follow the road vertically (bilateral, frictionless: the linearisation about the
 as the paper's FE model with the contact set frozen). At each frequency:
 
 1. the receptance between the contact points, :math:`C(\\omega)`, from the harmonic sum with
-   the frequency-dependent moduli (:mod:`.tire.section_contact`); harmonics up to the last one
-   with a mode below ``cutoff`` are reduced with their modes at every frequency, the
-   quasi-static rest is computed on a grid of harmonics and frequencies and interpolated
-   (cubic in both, smooth there: no resonance);
+   the frequency-dependent moduli (:mod:`.tire.section_contact`): every harmonic is
+   Ritz-reduced (:mod:`.tire.section_dynamics`), those with a mode below ``cutoff`` with their
+   modes; the quasi-static rest is sampled in ``n`` (24 harmonics, cubic interpolation between
+   them: smooth there, no resonance); every reduced harmonic is evaluated at every frequency;
 2. the hub-force transfer of a vertical force at each point, ``t(omega)``, from the exact
    ``n = 1`` rim reaction (:func:`.tire.section_dynamics.rim_transfer`);
 3. the hub force per unit road displacement at each point,
@@ -229,12 +229,15 @@ def footprint_frf(
     tire, static : SectionTire, SectionStaticState
     freqs : ndarray
         Frequencies (Hz), ascending, >= 0.
+        The contact set must be fore-aft symmetric (flat road or drum: the static solves are);
+        the solve works on its mirror-even half.
     cutoff_factor : float
         Harmonics with a mode below ``cutoff_factor * max(freqs)`` are reduced with those modes;
         at 2.5 the first harmonic without one is within 1.1e-3 of its direct solve at f_max
         (4e-3 at 2.0).
     """
     freqs = _check_inputs(tire, static, freqs)
+    keep, representative, partner = _mirror_pairs(static)  # before any work: the set must be symmetric
     f_max = float(freqs.max())
     grid, ops = tire.grid, tire.ops
     c = grid.n_cols
@@ -249,7 +252,6 @@ def footprint_frf(
     th = grid.theta[row]
     spread = np.sinc(grid.dtheta / (2 * np.pi))
     transfer = (-(np.cos(th) ** 2) * rim.contact[:, col] + np.sin(th) ** 2 * rim.contact[:, c + col]) * spread
-    keep, representative, partner = _mirror_pairs(static)
     centre = (offsets.size - 1) // 2
     direct = row[keep][:, None] - row[keep][None, :] + centre
     paired = partner >= 0
@@ -271,18 +273,18 @@ def footprint_frf(
     def fill(k: int, omegas: np.ndarray) -> None:
         flat[k, : omegas.size] = harmonics[k].receptance(ops.laws, omegas).reshape(omegas.size, -1)
 
-    workers = ThreadPoolExecutor(max_workers=2)  # LAPACK releases the GIL: two harmonics at a time
-    for start in blocks:
-        part = slice(start, min(start + BLOCK, freqs.size))
-        omegas = 2 * np.pi * freqs[part]
-        with threadpool_limits(1):
-            list(workers.map(fill, range(len(harmonics)), repeat(omegas)))
-        sums = _angular(flat[:, : omegas.size], cos, sin, c)
-        for k, f_index in enumerate(range(part.start, part.stop)):
-            # an even displacement field: h(j, -a) = h(j, a); the mirrored column adds to its partner
-            comp = projection.even(sums[k], paired)
-            hub[f_index] = sla.solve(comp, transfer[f_index, keep])[representative]
-    workers.shutdown()
+    # LAPACK releases the GIL: two harmonics at a time
+    with ThreadPoolExecutor(max_workers=2) as workers:
+        for start in blocks:
+            part = slice(start, min(start + BLOCK, freqs.size))
+            omegas = 2 * np.pi * freqs[part]
+            with threadpool_limits(1):
+                list(workers.map(fill, range(len(harmonics)), repeat(omegas)))
+            sums = _angular(flat[:, : omegas.size], cos, sin, c)
+            for k, f_index in enumerate(range(part.start, part.stop)):
+                # an even displacement field: h(j, -a) = h(j, a); the mirrored column adds to its partner
+                comp = projection.even(sums[k], paired)
+                hub[f_index] = sla.solve(comp, transfer[f_index, keep])[representative]
     return FootprintFRF(freqs=freqs, hub=hub, transfer=transfer, free_rim=rim.free_rim, static=static, n_dynamic=n_dyn)
 
 
