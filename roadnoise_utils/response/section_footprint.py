@@ -39,6 +39,7 @@ from ..tire.section_contact import angular_sums, patch_factor
 from ..tire.section_dynamics import direct_receptance, harmonic_modes, reduce_harmonic, rim_transfer
 from ..tire.section_static import SectionStaticState, SectionTire
 from ..tire.tasselli import Tasselli
+from .frf import FRFResult
 
 #: Frequencies per block of the evaluation (memory: block x offsets x (2 columns)^2 complex).
 BLOCK = 16
@@ -82,6 +83,20 @@ class FootprintFRF:
         if t.node_x.size != self.hub.shape[1]:
             raise ValueError("tasselli must partition this footprint's contact points (static.tasselli)")
         return self.hub @ t.membership().T
+
+    def to_frf_result(self) -> FRFResult:
+        """The same FRFs as the ring model's :class:`.frf.FRFResult` (the input of the fits, Eq. 1-4).
+
+        ``H`` per tassello of ``static.tasselli`` (rows), ``H_points`` per contact point.
+        """
+        return FRFResult(
+            freqs=self.freqs,
+            H=self.H_tasselli().T,
+            H_tot=self.H_tot,
+            G_H=self.G_H,
+            H_points=self.hub.T,
+            method="cross-section tire: harmonic sum, Ritz-reduced harmonics",
+        )
 
     @property
     def G_H(self) -> np.ndarray:

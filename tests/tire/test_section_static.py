@@ -95,6 +95,14 @@ def test_moving_hub_stiffness_equals_the_footprint_stiffness_at_rest(frf, flat):
     assert -frf.G_H[0].real / (frf.H_tot[0].real * spread) - 1 == pytest.approx(0.0, abs=1e-9)
 
 
+def test_frf_result_feeds_the_ring_models_stages(frf, flat):
+    """The footprint FRFs in the ring model's FRFResult: one row per tassello, superposition exact (Eq. i)."""
+    result = frf.to_frf_result()
+    assert result.H.shape == (flat.tasselli.n, frf.freqs.size)
+    np.testing.assert_allclose(result.H_sum, result.H_tot, rtol=1e-12)
+    np.testing.assert_allclose(result.G_H, frf.G_H)
+
+
 def test_harmonic_convergence(tire):
     """(c) The loaded deflection moves < 0.1 % from 300 to 400 harmonics."""
     coarse = solve_section_static(section_stages.section_tire(tire.spec.replace(**{"mesh.harmonics": 300})))
