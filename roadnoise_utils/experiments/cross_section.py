@@ -203,7 +203,7 @@ def damping_sources(tire: SectionTire, harmonics=(0, 1, 2, 3), frequency: float 
             if np.argmax(np.abs(v[3 * centre : 3 * centre + 3])) == 0:  # radial at the crown centre
                 break
         w = 2 * np.pi if n == 0 else np.pi
-        parts = {name: w * float(v @ (_elastic(ops, name, n) @ v)) for name in ops.elastic}
+        parts = {name: w * float(v @ (ops.layers(name, n) @ v)) for name in ops.elastic}
         parts["pneumatic"] = w * float(v @ (ops.pneumatic(n) @ v))
         storage = {name: float(ops.laws[name].storage(omega)) for name in ops.laws}
         loss = {name: float(ops.laws[name].loss_factor(omega)) for name in ops.laws}
@@ -220,8 +220,3 @@ def damping_sources(tire: SectionTire, harmonics=(0, 1, 2, 3), frequency: float 
         )
         rows.append(row)
     return pd.DataFrame(rows).set_index("n")
-
-
-def _elastic(ops, name: str, n: int):
-    k0, k1, k2 = ops.elastic[name]
-    return k0 + n * k1 + n * n * k2

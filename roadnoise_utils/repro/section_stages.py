@@ -23,9 +23,8 @@ from ..tire import section_static as static_module
 from ..tire import spec
 from ..tire.cross_section import CrossSectionSpec
 from ..tire.section_static import SectionStaticState, SectionTire, build_section_tire
-from ..tire.static import make_road
 from .cache import cached
-from .stages import DEFAULT_FREQS
+from .stages import DEFAULT_FREQS, loaded_inputs
 
 SectionTireLike = str | Path | CrossSectionSpec
 
@@ -47,14 +46,7 @@ def section_tire(tire: SectionTireLike) -> SectionTire:
 
 
 def _inputs(tire: SectionTireLike, road: str, load: float | None, drum_radius: float | None) -> dict:
-    tire_spec = load_section_tire(tire)
-    surface = make_road(road, drum_radius)
-    return {
-        "tire": tire_spec,
-        "road": surface.kind,
-        "drum_radius": surface.drum_radius,
-        "load": tire_spec.operating.vertical_load if load is None else float(load),
-    }
+    return loaded_inputs(load_section_tire(tire), road, load, drum_radius)
 
 
 def section_static(

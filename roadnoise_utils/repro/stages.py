@@ -68,7 +68,11 @@ def build_fet(tire: Tire) -> FETModel:
 
 def _loaded(tire: Tire, road: str, load: float | None, drum_radius: float | None) -> dict:
     """The resolved arguments of the loaded tire: spec, road, drum radius, load."""
-    tire_spec = load_tire(tire)
+    return loaded_inputs(load_tire(tire), road, load, drum_radius)
+
+
+def loaded_inputs(tire_spec, road: str, load: float | None, drum_radius: float | None) -> dict:
+    """The resolved arguments of a loaded tire of either model (its validated spec): the cache key's core."""
     surface = make_road(road, drum_radius)
     return {
         "tire": tire_spec,

@@ -26,7 +26,7 @@ from typing import Any
 import numpy as np
 
 from . import laminate
-from .spec import Compound, Operating, Tassellation, build_section, check_model, param
+from .spec import Compound, Operating, Tassellation, build_section, check_model, param, set_parameter
 
 
 @dataclass(frozen=True)
@@ -173,15 +173,7 @@ class CrossSectionSpec:
         """A copy with some parameters changed (``"layers.tread.youngs_modulus"``), validated again."""
         data = to_dict(self)
         for key, value in changes.items():
-            node = data
-            *parents, leaf = key.split(".")
-            for part in parents:
-                if part not in node or not isinstance(node[part], dict):
-                    raise KeyError(f"unknown parameter section {part!r} in {key!r}")
-                node = node[part]
-            if leaf not in node:
-                raise KeyError(f"unknown parameter {key!r}")
-            node[leaf] = value
+            set_parameter(data, key, value)
         return from_dict(data, source=self.source + " (modified)")
 
 

@@ -109,12 +109,16 @@ class HarmonicOperators:
         names = tuple(self.elastic)
         return names if self.pneumatic_law in (None, *names) else (*names, self.pneumatic_law)
 
+    def layers(self, name: str, n: int) -> sp.csr_matrix:
+        """Elastic stiffness of one compound's layers at harmonic ``n`` (without ``w_n``); zero if it has none."""
+        if name not in self.elastic:
+            return sp.csr_matrix(self.mass.shape)
+        k0, k1, k2 = self.elastic[name]
+        return (k0 + n * k1 + n * n * k2).tocsr()
+
     def compound(self, name: str, n: int) -> sp.csr_matrix:
         """Static stiffness scaled by one compound's law at harmonic ``n`` (without ``w_n``)."""
-        total = sp.csr_matrix(self.mass.shape)
-        if name in self.elastic:
-            k0, k1, k2 = self.elastic[name]
-            total = k0 + n * k1 + n * n * k2
+        total = self.layers(name, n)
         if name == self.pneumatic_law:
             total = total + self.pneumatic(n)
         return total.tocsr()

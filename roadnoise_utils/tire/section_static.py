@@ -32,7 +32,7 @@ from .section_geometry import Meridian, section_mesh
 from .section_mesh import SectionMesh
 from .section_model import HarmonicOperators, harmonic_operators
 from .static import RoadSurface, check_load, make_road
-from .tasselli import Tasselli, tassellate
+from .tasselli import FootprintMeasures, Tasselli, tassellate
 
 
 @dataclass(frozen=True, eq=False)
@@ -59,7 +59,7 @@ def build_section_tire(spec: CrossSectionSpec) -> SectionTire:
 
 
 @dataclass(frozen=True, eq=False)
-class SectionStaticState:
+class SectionStaticState(FootprintMeasures):
     """The loaded cross-section tire (the :class:`.static.StaticState` of this model).
 
     Arrays over the contact grid are (n_cols, n_rows): ``contact`` (bool), ``contact_force``
@@ -82,29 +82,9 @@ class SectionStaticState:
     tire: CrossSectionSpec | None = field(default=None, repr=False)
 
     @property
-    def footprint_length(self) -> float:
-        """Longest contact length (m), the points' arcs included."""
-        t = self.tasselli
-        return float(np.max(t.node_x + 0.5 * t.node_dx_plus) - np.min(t.node_x - 0.5 * t.node_dx_minus))
-
-    @property
-    def footprint_width(self) -> float:
-        """Width of the columns in contact (m), their tributary widths included."""
-        t = self.tasselli
-        return float(np.max(t.node_y + 0.5 * t.widths) - np.min(t.node_y - 0.5 * t.widths))
-
-    @property
-    def contact_area(self) -> float:
-        return float(np.sum(self.tasselli.area))
-
-    @property
     def node_pressure(self) -> np.ndarray:
         """Contact pressure at each tasselli node, in their order (the order of :attr:`points`) (Pa)."""
         return self.pressure[self.points]
-
-    @property
-    def mean_pressure(self) -> float:
-        return self.load / self.contact_area
 
     @property
     def points(self) -> tuple[np.ndarray, np.ndarray]:

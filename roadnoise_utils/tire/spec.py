@@ -207,16 +207,21 @@ class TireSpec:
             if key == "name":
                 data["tire"]["name"] = value
                 continue
-            node = data
-            *parents, leaf = key.split(".")
-            for part in parents:
-                if part not in node or not isinstance(node[part], dict):
-                    raise KeyError(f"unknown parameter section {part!r} in {key!r}")
-                node = node[part]
-            if leaf not in node:
-                raise KeyError(f"unknown parameter {key!r}")
-            node[leaf] = value
+            set_parameter(data, key, value)
         return from_dict(data, source=self.source + " (modified)")
+
+
+def set_parameter(data: dict[str, Any], key: str, value: Any) -> None:
+    """Set ``"section.field"`` (any depth) of a tire file's nested data; unknown keys raise ``KeyError``."""
+    node = data
+    *parents, leaf = key.split(".")
+    for part in parents:
+        if part not in node or not isinstance(node[part], dict):
+            raise KeyError(f"unknown parameter section {part!r} in {key!r}")
+        node = node[part]
+    if leaf not in node:
+        raise KeyError(f"unknown parameter {key!r}")
+    node[leaf] = value
 
 
 def to_dict(spec: TireSpec) -> dict[str, Any]:

@@ -29,7 +29,7 @@ from .. import guards
 from .active_set import active_set
 from .ring_model import UZ, FETModel
 from .spec import Operating, TireSpec, to_dict
-from .tasselli import Tasselli, tassellate
+from .tasselli import FootprintMeasures, Tasselli, tassellate
 
 #: Largest drum radius (m): test drums are 0.8-3 m; a radius in millimetres would pass unnoticed.
 MAX_DRUM_RADIUS = 20.0
@@ -64,7 +64,7 @@ class RoadSurface:
 
 
 @dataclass(frozen=True, eq=False)
-class StaticState:
+class StaticState(FootprintMeasures):
     """The inflated tire loaded against the road.
 
     Attributes
@@ -110,31 +110,9 @@ class StaticState:
     tire: TireSpec | None = field(default=None, repr=False)
 
     @property
-    def footprint_length(self) -> float:
-        """Longest contact length of a strip (m), tread-point tributary lengths included."""
-        t = self.tasselli
-        return float(np.max(t.node_x + 0.5 * t.node_dx_plus) - np.min(t.node_x - 0.5 * t.node_dx_minus))
-
-    @property
-    def footprint_width(self) -> float:
-        """Width of the strips in contact (m)."""
-        t = self.tasselli
-        return float(np.ptp(t.node_y) + t.strip_width)
-
-    @property
     def node_pressure(self) -> np.ndarray:
         """Contact pressure at each tasselli node, in their order (Pa)."""
         return self.pressure[self.tasselli.node_strip, self.tasselli.node_index]
-
-    @property
-    def contact_area(self) -> float:
-        """Gross contact area (m^2)."""
-        return float(np.sum(self.tasselli.area))
-
-    @property
-    def mean_pressure(self) -> float:
-        """Load over gross contact area (Pa)."""
-        return self.load / self.contact_area
 
 
 @dataclass(eq=False)

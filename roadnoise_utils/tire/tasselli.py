@@ -143,6 +143,38 @@ class Tasselli:
         return out
 
 
+class FootprintMeasures:
+    """Footprint measures of a loaded tire from its tasselli (a mixin of both models' static states).
+
+    Needs the attributes ``tasselli`` (:class:`Tasselli`) and ``load`` (N).
+    """
+
+    tasselli: Tasselli
+    load: float
+
+    @property
+    def footprint_length(self) -> float:
+        """Longest contact length (m), the contact points' tributary lengths included."""
+        t = self.tasselli
+        return float(np.max(t.node_x + 0.5 * t.node_dx_plus) - np.min(t.node_x - 0.5 * t.node_dx_minus))
+
+    @property
+    def footprint_width(self) -> float:
+        """Width of the columns in contact (m), their tributary widths included."""
+        t = self.tasselli
+        return float(np.max(t.node_y + 0.5 * t.widths) - np.min(t.node_y - 0.5 * t.widths))
+
+    @property
+    def contact_area(self) -> float:
+        """Gross contact area (m^2)."""
+        return float(np.sum(self.tasselli.area))
+
+    @property
+    def mean_pressure(self) -> float:
+        """Load over gross contact area (Pa)."""
+        return self.load / self.contact_area
+
+
 def tassellate(
     node_strip: np.ndarray,
     node_index: np.ndarray,
