@@ -260,7 +260,7 @@ def test_an_fe_model_and_a_static_state_of_different_tires_are_refused(tire, fet
         (lambda: ru.solve_static("165_65R14"), "fet must be an FETModel .* ru.stages.solve_static takes a tire name"),
         (lambda: ru.assemble_fixed_hub("fits"), "fits must be a FitSet or a list of RationalFit"),
         (lambda: ru.assemble_fixed_hub([np.ones(3)]), "fits must hold RationalFit objects"),
-        (lambda: ru.road.profile_input(None, lambda s: 0 * s, 5.0, (0, 0.01)), "static must be a StaticState"),
+        (lambda: ru.road.profile_input(None, lambda s: 0 * s, 5.0, (0, 0.01)), "static must be the loaded tire"),
         (lambda: ru.load_tire(123), "tire file: give a name"),
         (lambda: ru.road.load_road_file("/tmp"), "does not exist or is not a file"),
     ],

@@ -18,7 +18,7 @@ LAYERS = [
     ["response"],
     ["rm"],
     ["vehicle"],
-    ["repro.cache", "repro.style"],
+    ["repro.cache", "repro.style", "repro.inputs"],
     ["repro.stages", "repro.section_stages"],
     ["experiments"],
     ["repro.claims", "repro.collection"],

@@ -68,12 +68,16 @@ class CornerSetup:
         return predicted_psd(freqs, self.fits.responses(freqs), self.static, spectrum, speed, self.model)
 
 
-def corner_setup(vehicle: str | QuarterCar = PAPER_CAR) -> CornerSetup:
-    """The corner of a vehicle file with its tire's cached RM stages."""
+def corner_setup(vehicle: str | QuarterCar = PAPER_CAR, tire: str | None = None) -> CornerSetup:
+    """The corner of a vehicle file with its tire's cached RM stages.
+
+    ``tire`` (a tire file name or path) replaces the vehicle file's, e.g. by its cross-section
+    model (``"195_65R15_cross_section"``).
+    """
     car = load_vehicle(vehicle) if not isinstance(vehicle, QuarterCar) else vehicle
-    tire = stages.load_tire(car.tire)
+    tire = stages.load_tire(car.tire if tire is None else tire)
     fits, hub = stages.fit_tasselli(tire), stages.fit_hub(tire)
-    rim_side_mass = stages.build_fet(tire).hub_vertical_mass
+    rim_side_mass = stages.rim_side_mass(tire)
     return CornerSetup(
         vehicle=car,
         tire=tire,
@@ -118,9 +122,15 @@ def quarter_car(
     vehicle: str | QuarterCar | CornerSetup = PAPER_CAR,
     conditions: RoadTestConditions | None = None,
     lateral: bool = True,
+    tire: str | None = None,
 ) -> QuarterCarTest:
-    """Drive a corner over every texture of the road test: road -> F_F -> corner -> spectra."""
-    setup = vehicle if isinstance(vehicle, CornerSetup) else corner_setup(vehicle)
+    """Drive a corner over every texture of the road test: road -> F_F -> corner -> spectra.
+
+    ``tire`` replaces the vehicle file's tire (:func:`corner_setup`; not with a ``CornerSetup``).
+    """
+    if isinstance(vehicle, CornerSetup) and tire is not None:
+        raise ValueError("tire: give it with a vehicle file, not with a CornerSetup (which has its tire)")
+    setup = vehicle if isinstance(vehicle, CornerSetup) else corner_setup(vehicle, tire)
     test = road_test_conditions() if conditions is None else conditions
     runs, seconds = {}, {}
     for name, spectrum in test.spectra().items():

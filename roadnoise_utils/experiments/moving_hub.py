@@ -19,7 +19,7 @@ from ..analysis import relative_rms_error
 from ..repro import stages
 from ..response.fe_reference import fe_moving_hub
 from ..rm.fitting import FitSet
-from ..rm.moving_hub import rm_moving_hub
+from ..rm.moving_hub import released_hub, rm_moving_hub
 from ..tire.spec import TireSpec
 from .conditions import load_conditions, resolve
 
@@ -107,8 +107,12 @@ def moving_hub_check(
         )
     spec = stages.load_tire(tire)
     values = (hub_suspension.mass, hub_suspension.stiffness, hub_suspension.damping)
-    fet = stages.build_fet(spec)
     fits, hub = stages.fit_tasselli(spec), stages.fit_hub(spec)
-    fe_hub, fe_force = fe_moving_hub(fet, stages.solve_static(spec), freqs, *values)
-    rm_hub, rm_force = rm_moving_hub(fits, hub, freqs, *values, tire_hub_mass=fet.hub_vertical_mass)
+    own_mass = stages.rim_side_mass(spec)
+    if stages.is_cross_section(spec):  # the direct two-port: H_tot and G_H of the harmonic solve
+        direct = stages.frf_visco(spec, freqs=freqs)
+        fe_hub, fe_force = released_hub(freqs, direct.H_tot, direct.G_H, values[0] + own_mass, *values[1:])
+    else:
+        fe_hub, fe_force = fe_moving_hub(stages.build_fet(spec), stages.solve_static(spec), freqs, *values)
+    rm_hub, rm_force = rm_moving_hub(fits, hub, freqs, *values, tire_hub_mass=own_mass)
     return MovingHubCheck(spec, hub_suspension, freqs, fe_hub, fe_force, rm_hub, rm_force, fits, hub)

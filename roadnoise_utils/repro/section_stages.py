@@ -13,6 +13,7 @@ stage                       caches
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
@@ -24,7 +25,7 @@ from ..tire import spec
 from ..tire.cross_section import CrossSectionSpec
 from ..tire.section_static import SectionStaticState, SectionTire, build_section_tire
 from .cache import cached
-from .stages import DEFAULT_FREQS, loaded_inputs
+from .inputs import DEFAULT_FREQS, loaded_inputs
 
 SectionTireLike = str | Path | CrossSectionSpec
 
@@ -71,12 +72,28 @@ def section_footprint(
     drum_radius: float | None = None,
     progress: bool = False,
 ) -> FootprintFRF:
-    """Cached :func:`.response.section_footprint.footprint_frf` (default 0-400 Hz every 1 Hz)."""
+    """Cached :func:`.response.section_footprint.footprint_frf` (default 0-400 Hz every 1 Hz).
+
+    Frequencies of the default grid (whole Hz, 0-400) are read from its cached result.
+    """
     inputs = _inputs(tire, road, load, drum_radius)
     freqs = DEFAULT_FREQS if freqs is None else np.asarray(freqs, dtype=float)
+    if not np.array_equal(freqs, DEFAULT_FREQS) and np.all(np.isin(freqs, DEFAULT_FREQS)):
+        return section_footprint(tire, road, None, load, drum_radius, progress).at(freqs)
     state = section_static(tire, road, load, drum_radius)
 
     def compute() -> FootprintFRF:
         return footprint.footprint_frf(build_section_tire(inputs["tire"]), state, freqs, progress=progress)
 
     return cached(section_footprint, {**inputs, "freqs": freqs}, compute, runs=(footprint.footprint_frf,))
+
+
+def tassello_frfs(
+    tire: SectionTireLike, road: str = "flat", load: float | None = None, drum_radius: float | None = None
+) -> Callable[[np.ndarray], np.ndarray]:
+    """The direct tassello FRFs :math:`H_i(f)` (n_tasselli, n_f; N/m) as a function of the frequencies (Hz)."""
+
+    def frfs(freqs: np.ndarray) -> np.ndarray:
+        return section_footprint(tire, road, freqs, load, drum_radius).H_tasselli().T
+
+    return frfs

@@ -28,37 +28,45 @@ from __future__ import annotations
 import control
 import numpy as np
 
-from ..response import fe_reference, frf, modes, one_sided
+from ..response import fe_reference, frf, modes, one_sided, section_footprint
 from ..response import modal_reduction as modal
 from ..response.frf import FRFResult
 from ..response.modal_reduction import ModalReduction
 from ..response.modes import LoadedModes
 from ..rm import moving_hub, order, realisation
 from ..rm.fitting import FitSet
-from ..road.cleat import cleat_profile
+from ..road.cleat import cleat_input, cleat_profile
 from ..road.input import BAND, RoadInput
-from ..tire import ring_model, spec, static
+from ..tire import ring_model, section_static, spec, static
+from ..tire.cross_section import CrossSectionSpec
 from ..tire.ring_model import FETModel
 from ..tire.spec import TireSpec
-from ..tire.static import StaticState, make_road
+from ..tire.static import StaticState
+from . import section_stages
 from .cache import cached
+from .inputs import DEFAULT_FREQS, FIT_TOLERANCE, loaded_inputs
 
-#: Default frequency grid of the direct sweeps: 0-400 Hz every 1 Hz (paper: up to 250 Hz,
-#: "easily improved to 400 Hz").
-DEFAULT_FREQS = np.arange(0.0, 400.0 + 0.5, 1.0)
-#: Relative RMS error every fit must meet when the order is chosen automatically.
-FIT_TOLERANCE = 0.01
-
-Tire = str | TireSpec
+Tire = str | TireSpec | CrossSectionSpec
 
 
-def load_tire(tire: Tire) -> TireSpec:
-    """A :class:`TireSpec` from a name or path (:func:`roadnoise_utils.tire.spec.load_tire`) or the spec itself.
+def load_tire(tire: Tire) -> TireSpec | CrossSectionSpec:
+    """The spec of a tire name or path (:func:`roadnoise_utils.tire.spec.load_tire`), or the spec itself.
 
-    A cross-section tire file loads as its own spec (``[tire] model``); the ring stages refuse it
-    in :func:`roadnoise_utils.tire.ring_model.build_fet`.
+    The file's ``[tire] model`` chooses the model: a :class:`TireSpec` (ring) or a
+    :class:`~roadnoise_utils.tire.cross_section.CrossSectionSpec`; every stage below runs on either,
+    except those named ring-only.
     """
-    return tire if isinstance(tire, TireSpec) else spec.load_tire(tire)
+    return tire if isinstance(tire, (TireSpec, CrossSectionSpec)) else spec.load_tire(tire)
+
+
+def is_cross_section(tire: Tire) -> bool:
+    """Whether the tire is a cross-section tire (``[tire] model = "cross-section"``)."""
+    return isinstance(load_tire(tire), CrossSectionSpec)
+
+
+def model_name(tire: Tire) -> str:
+    """The tire model of a tire file: ``"ring"`` or ``"cross-section"``."""
+    return "cross-section" if is_cross_section(tire) else "ring"
 
 
 def build_fet(tire: Tire) -> FETModel:
@@ -66,20 +74,31 @@ def build_fet(tire: Tire) -> FETModel:
     return ring_model.build_fet(load_tire(tire))
 
 
+def rim_side_mass(tire: Tire) -> float:
+    """The FE tire's mass the hub carries besides :math:`G_H` (kg), added to the unsprung mass (Eq. 5-7).
+
+    Ring: :attr:`~roadnoise_utils.tire.ring_model.FETModel.hub_vertical_mass`. Cross-section:
+    0, its :math:`G_H` holding the inertia of the clamped bead nodes (0.06 kg on the 165/65 R14).
+    """
+    return 0.0 if is_cross_section(tire) else build_fet(tire).hub_vertical_mass
+
+
 def _loaded(tire: Tire, road: str, load: float | None, drum_radius: float | None) -> dict:
     """The resolved arguments of the loaded tire: spec, road, drum radius, load."""
     return loaded_inputs(load_tire(tire), road, load, drum_radius)
 
 
-def loaded_inputs(tire_spec, road: str, load: float | None, drum_radius: float | None) -> dict:
-    """The resolved arguments of a loaded tire of either model (its validated spec): the cache key's core."""
-    surface = make_road(road, drum_radius)
-    return {
-        "tire": tire_spec,
-        "road": surface.kind,
-        "drum_radius": surface.drum_radius,
-        "load": tire_spec.operating.vertical_load if load is None else float(load),
-    }
+def _ring_only(tire: Tire, stage: str) -> None:
+    """Refuse a cross-section tire in a stage only the ring model has."""
+    if is_cross_section(tire):
+        raise ValueError(f'{stage} runs on ring tires ([tire] model = "ring"); {tire!r} is a cross-section tire')
+
+
+def _frf_runs(tire: Tire) -> tuple:
+    """The numerics behind :func:`frf_visco` for this tire's model (cache fingerprints)."""
+    if is_cross_section(tire):
+        return (section_footprint.footprint_frf, section_static.solve_section_static)
+    return (frf.frf_visco, static.solve_static)
 
 
 def _finite(inputs: dict) -> float | None:
@@ -90,7 +109,10 @@ def _finite(inputs: dict) -> float | None:
 def solve_static(
     tire: Tire, road: str = "flat", load: float | None = None, drum_radius: float | None = None
 ) -> StaticState:
-    """Cached :func:`roadnoise_utils.tire.static.solve_static`; ``drum_radius`` (m) is required for a drum."""
+    """The loaded tire (cached): :func:`roadnoise_utils.tire.static.solve_static` for a ring tire,
+    :func:`.section_stages.section_static` for a cross-section tire; ``drum_radius`` (m) is required for a drum."""
+    if is_cross_section(tire):
+        return section_stages.section_static(load_tire(tire), road, load, drum_radius)
     inputs = _loaded(tire, road, load, drum_radius)
 
     def compute() -> StaticState:
@@ -106,12 +128,27 @@ def frf_visco(
     freqs: np.ndarray | None = None,
     load: float | None = None,
     drum_radius: float | None = None,
-    stick: bool = True,
+    stick: bool | None = None,
     progress: bool = False,
 ) -> FRFResult:
-    """Cached :func:`roadnoise_utils.response.frf.frf_visco` (default :data:`DEFAULT_FREQS`, 0-400 Hz)."""
-    inputs = _loaded(tire, road, load, drum_radius)
+    """The direct fixed-hub FRFs (cached; default :data:`DEFAULT_FREQS`, 0-400 Hz).
+
+    A ring tire runs :func:`roadnoise_utils.response.frf.frf_visco` (``stick``: the footprint
+    held in all directions, default, or free to slide); a cross-section tire runs
+    :func:`.section_stages.section_footprint` (its contact is frictionless: ``stick`` must be
+    ``None`` or ``False``) and returns the same :class:`FRFResult`.
+    """
     freqs = DEFAULT_FREQS if freqs is None else np.asarray(freqs, dtype=float)
+    if is_cross_section(tire):
+        if stick:
+            raise ValueError(
+                "stick = True: the cross-section tire's contact points slide freely (frictionless, vertical "
+                "only); valid values are None or False"
+            )
+        found = section_stages.section_footprint(load_tire(tire), road, freqs, load, drum_radius, progress)
+        return found.to_frf_result()
+    stick = True if stick is None else bool(stick)
+    inputs = _loaded(tire, road, load, drum_radius)
     state = solve_static(tire, road, load, drum_radius)
 
     def compute() -> FRFResult:
@@ -130,7 +167,8 @@ def loaded_modes(
     load: float | None = None,
     drum_radius: float | None = None,
 ) -> LoadedModes:
-    """Cached :func:`roadnoise_utils.response.modes.loaded_modes`."""
+    """Cached :func:`roadnoise_utils.response.modes.loaded_modes` (ring tires)."""
+    _ring_only(tire, "loaded_modes")
     inputs = _loaded(tire, road, load, drum_radius)
     options = {"n_modes": int(n_modes), "reference_frequency": float(reference_frequency)}
     state = solve_static(tire, road, load, drum_radius)
@@ -151,6 +189,7 @@ def modal_reduction(
     drum_radius: float | None = None,
 ) -> ModalReduction:
     """Cached :func:`roadnoise_utils.response.modal_reduction.modal_reduction` on the default direct sweep."""
+    _ring_only(tire, "modal_reduction")
     inputs = _loaded(tire, road, load, drum_radius)
     options = {"frozen": frozen, "damping": damping, "reference_frequency": reference_frequency}
     state = solve_static(tire, road, load, drum_radius)
@@ -179,16 +218,17 @@ def fit_tasselli(
 
     ``n_poles=None`` takes the lowest order at which every tassello is fitted within
     :data:`FIT_TOLERANCE` (:func:`roadnoise_utils.rm.order.lowest_order`; notebook 03 shows
-    why the direct FRFs and this order).
+    why the direct FRFs and this order), or, when no order up to 24 gets there, the order with the
+    smallest worst error, with a warning (the 195/65 R15 cross-section tire: its shoulder tasselli).
     """
     inputs = _loaded(tire, road, load, drum_radius)
     options = {"n_poles": n_poles, "f_max": float(f_max), "tolerance": FIT_TOLERANCE}
     visco = frf_visco(tire, road, load=load, drum_radius=drum_radius)
 
     def compute() -> FitSet:
-        return order.fit_at_order(visco.freqs, visco.H, n_poles, f_max, FIT_TOLERANCE)
+        return order.fit_at_order(visco.freqs, visco.H, n_poles, f_max, FIT_TOLERANCE, strict=False)
 
-    return cached(fit_tasselli, {**inputs, **options}, compute, runs=(order.fit_at_order, frf.frf_visco))
+    return cached(fit_tasselli, {**inputs, **options}, compute, runs=(order.fit_at_order, *_frf_runs(tire)))
 
 
 def fit_hub(
@@ -207,7 +247,7 @@ def fit_hub(
     def compute() -> FitSet:
         return moving_hub.fit_hub(visco.freqs, visco.G_H, n_poles=n_poles, f_max=f_max, tolerance=FIT_TOLERANCE)
 
-    return cached(fit_hub, {**inputs, **options}, compute, runs=(moving_hub.fit_hub, frf.frf_visco))
+    return cached(fit_hub, {**inputs, **options}, compute, runs=(moving_hub.fit_hub, *_frf_runs(tire)))
 
 
 def assemble_fixed_hub(
@@ -232,11 +272,20 @@ def fe_cleat_response(
     duration: float = 1.0,
     band: float = BAND,
 ) -> tuple[RoadInput, np.ndarray]:
-    """Cached :func:`roadnoise_utils.response.fe_reference.fe_cleat_response` on the drum: ``(road, force)``.
+    """A cleat on the drum and its hub force straight from the FE tire (no reduction, no fit): ``(road, force)``.
 
-    Every cleat argument is explicit (``ru.experiments.cleat_test`` resolves them from
-    ``data/conditions/cleat_test.toml``), so editing the conditions changes the key.
+    A ring tire: cached :func:`roadnoise_utils.response.fe_reference.fe_cleat_response`. A
+    cross-section tire: the same frequency-domain sum
+    (:func:`~roadnoise_utils.response.fe_reference.frequency_domain_response`) over its direct
+    tassello FRFs (:func:`.section_stages.tassello_frfs`). Every cleat argument is explicit
+    (``ru.experiments.cleat_test`` resolves them from ``data/conditions/cleat_test.toml``), so
+    editing the conditions changes the key.
     """
+    if is_cross_section(tire):
+        state = solve_static(tire, "drum", drum_radius=drum_radius)
+        road = cleat_input(state, speed, height, base, shape, distance)
+        frfs = section_stages.tassello_frfs(load_tire(tire), "drum", drum_radius=drum_radius)
+        return road, fe_reference.frequency_domain_response(frfs, road.u, road.dt, band, duration)
     inputs = {
         **_loaded(tire, "drum", None, drum_radius),
         "speed": float(speed),
@@ -272,8 +321,9 @@ def one_sided_run(
 
     ``speed`` in m/s, cleat and ``distance`` in m; ``frozen`` keeps the static contact set
     bilateral (dynamic only); ``step`` is the travel between quasi-static solves (m); ``dt`` the
-    time step (s; default :data:`roadnoise_utils.response.one_sided.DT_MAX` or finer).
+    time step (s; default :data:`roadnoise_utils.response.one_sided.DT_MAX` or finer). Ring tires.
     """
+    _ring_only(tire, "one_sided_run")
     inputs = {
         **_loaded(tire, "drum", None, drum_radius),
         "speed": float(speed),

@@ -13,6 +13,8 @@ The second method every RM-chain result is checked against (DESIGN section 4):
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 import scipy.sparse.linalg as spla
 
@@ -91,14 +93,29 @@ def _frequency_response(
     progress: bool = False,
     stick: bool = True,
 ) -> np.ndarray:
-    """Zero-pad the inputs ``u`` (rows) to ``duration`` s, weigh them by the FRFs ``which`` of :func:`frf_visco`, sum."""
+    """:func:`frequency_domain_response` with the FRFs ``which`` of :func:`frf_visco`."""
+
+    def frfs(freqs: np.ndarray) -> np.ndarray:
+        return getattr(frf_visco(fet, static, freqs, progress=progress, stick=stick), which)
+
+    return frequency_domain_response(frfs, u, dt, band, duration)
+
+
+def frequency_domain_response(
+    frfs: Callable[[np.ndarray], np.ndarray], u: np.ndarray, dt: float, band: float = BAND, duration: float = 1.0
+) -> np.ndarray:
+    """Hub force (N) of the inputs ``u`` (n_inputs, n_t; m, every ``dt`` s) through direct FRFs.
+
+    The inputs are zero-padded to ``duration`` s, Fourier transformed, weighed by ``frfs(freqs)``
+    (n_inputs, n_freqs; N/m) at every FFT bin the :func:`band_window` keeps, summed, windowed and
+    transformed back. Works for the FRFs of either tire model.
+    """
     n = max(u.shape[1], int(round(duration / dt)))
     freqs = np.fft.rfftfreq(n, dt)
     window = band_window(freqs, band)
     keep = window > 0
-    frf = getattr(frf_visco(fet, static, freqs[keep], progress=progress, stick=stick), which)
     spectrum = np.zeros(freqs.size, complex)
-    spectrum[keep] = np.sum(frf * np.fft.rfft(u, n, axis=1)[:, keep], axis=0) * window[keep]
+    spectrum[keep] = np.sum(frfs(freqs[keep]) * np.fft.rfft(u, n, axis=1)[:, keep], axis=0) * window[keep]
     return np.fft.irfft(spectrum, n)[: u.shape[1]]
 
 

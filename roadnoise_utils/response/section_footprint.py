@@ -25,7 +25,7 @@ negative, the force on the hub, as for the ring model.
 from __future__ import annotations
 
 from concurrent.futures import ThreadPoolExecutor
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from itertools import repeat
 
 import numpy as np
@@ -83,6 +83,18 @@ class FootprintFRF:
         if t.node_x.size != self.hub.shape[1]:
             raise ValueError("tasselli must partition this footprint's contact points (static.tasselli)")
         return self.hub @ t.membership().T
+
+    def at(self, freqs: np.ndarray) -> FootprintFRF:
+        """The same transfer at some of its frequencies (Hz; each must be one of ``self.freqs``)."""
+        freqs = np.asarray(freqs, float)
+        pick = np.searchsorted(self.freqs, freqs)
+        if np.any(pick >= self.freqs.size) or not np.array_equal(
+            self.freqs[np.minimum(pick, self.freqs.size - 1)], freqs
+        ):
+            raise ValueError("freqs must be frequencies of this FootprintFRF")
+        return replace(
+            self, freqs=freqs, hub=self.hub[pick], transfer=self.transfer[pick], free_rim=self.free_rim[pick]
+        )
 
     def to_frf_result(self) -> FRFResult:
         """The same FRFs as the ring model's :class:`.frf.FRFResult` (the input of the fits, Eq. 1-4).

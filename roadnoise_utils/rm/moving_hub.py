@@ -60,12 +60,24 @@ def rm_moving_hub(
     :math:`G_H` leaves out and the FE model carries itself.
     """
     f = np.asarray(freqs, float)
-    w = 2 * np.pi * f
     fixed = fits.responses(f).sum(axis=0)  # F_F per unit displacement of the whole footprint
-    g_h = hub[0](f)
-    mass = hub_mass + tire_hub_mass
-    u_hub = fixed / (-(w**2) * mass + stiffness + 1j * w * damping - g_h)
-    return u_hub, fixed + g_h * u_hub
+    return released_hub(f, fixed, hub[0](f), hub_mass + tire_hub_mass, stiffness, damping)
+
+
+def released_hub(
+    freqs: np.ndarray, H_tot: np.ndarray, G_H: np.ndarray, mass: float, stiffness: float, damping: float
+) -> tuple[np.ndarray, np.ndarray]:
+    r"""Hub motion and force per unit footprint displacement with the hub on a suspension to ground (Eq. 5-7).
+
+    The tire is a linear two-port: the hub force is :math:`F_M = H_{tot}\,u + G_H\,U_H` (Eq. 5)
+    and the hub obeys :math:`(-\omega^2 m + k + i\omega c)\,U_H = F_M`, so
+    :math:`U_H = H_{tot} / (-\omega^2 m + k + i\omega c - G_H)`. ``freqs`` in Hz, ``H_tot`` and
+    ``G_H`` in N/m (fitted or direct), ``mass`` (kg: hub plus the tire's rim-side mass),
+    ``stiffness`` (N/m), ``damping`` (N s/m). Returns ``(U_H, F_M)`` (m/m, N/m).
+    """
+    w = 2 * np.pi * np.asarray(freqs, float)
+    u_hub = H_tot / (-(w**2) * mass + stiffness + 1j * w * damping - G_H)
+    return u_hub, H_tot + G_H * u_hub
 
 
 def fit_hub(

@@ -30,6 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import guards
+from ..tire.section_static import SectionStaticState
 from ..tire.static import StaticState
 from .kernels import strip_kernels
 from .textures import MAX_HEIGHT, RoadSpectrum, as_spectrum, generate_field, generate_profile
@@ -170,8 +171,7 @@ def profile_input(
         (or than :data:`ROAD_GRID` when a time step covers less road; the result is then
         interpolated linearly to the time samples).
     """
-    if not isinstance(static, StaticState):
-        raise TypeError(f"static must be a StaticState (ru.solve_static(fet)), got {type(static).__name__}")
+    _check_static(static)
     speed = guards.real("speed", speed, 0.0, MAX_SPEED, lo_open=True, unit="m/s (km/h / 3.6)")
     fs = sample_rate_for(speed) if sample_rate is None else sample_rate
     check_sampling(speed, fs)
@@ -252,6 +252,18 @@ def _takes_lateral(profile) -> bool:
     return len(required) >= 2 or (len(positional) >= 2 and positional[1].name == "y")
 
 
+#: Loaded states of the two tire models: both carry the tasselli a road flows through.
+LOADED_STATES = (StaticState, SectionStaticState)
+
+
+def _check_static(static) -> None:
+    if not isinstance(static, LOADED_STATES):
+        raise TypeError(
+            f"static must be the loaded tire of ru.stages.solve_static(tire) (a StaticState or "
+            f"SectionStaticState), got {type(static).__name__}"
+        )
+
+
 def _strip_centres(static: StaticState) -> np.ndarray:
     """Lateral position of every belt strip (m), indexed by strip number."""
     t = static.tasselli
@@ -302,8 +314,7 @@ def texture_input(
     step : float
         Road grid of the generated profile (m), at most a fifth of the shortest wavelength.
     """
-    if not isinstance(static, StaticState):
-        raise TypeError(f"static must be a StaticState (ru.solve_static(fet)), got {type(static).__name__}")
+    _check_static(static)
     spectrum = as_spectrum(spectrum)
     if not isinstance(lateral, (bool, np.bool_)):
         raise ValueError(f"lateral = {lateral!r} must be True (a 3D road) or False (uniform across the width)")

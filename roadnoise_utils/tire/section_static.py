@@ -137,7 +137,7 @@ def section_tasselli(tire: SectionTire, contact: np.ndarray) -> Tasselli:
     n_bands = max(1, int(round((right - left) / (spacing * spec.strips_per_column))))
     band = np.clip(((grid.y - left) / ((right - left) / n_bands)).astype(int), 0, n_bands - 1)
     return tassellate(
-        node_strip=band[col],
+        node_strip=col,  # each column of contact points has its own lateral position: its own road track
         node_index=row,
         node_x=x[col, row],
         node_y=grid.y[col],
@@ -147,6 +147,7 @@ def section_tasselli(tire: SectionTire, contact: np.ndarray) -> Tasselli:
         target_length=spec.target_length,
         strips_per_column=1,
         node_width=grid.width[col],
+        node_column=band[col],
     )
 
 

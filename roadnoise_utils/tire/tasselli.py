@@ -186,6 +186,7 @@ def tassellate(
     target_length: float,
     strips_per_column: int,
     node_width: np.ndarray | None = None,
+    node_column: np.ndarray | None = None,
 ) -> Tasselli:
     """Divide contact nodes into rows and columns of tasselli.
 
@@ -206,6 +207,10 @@ def tassellate(
     node_width : ndarray, optional
         Lateral tributary width of each node (m) where it differs from node to node (the
         cross-section tire's quadratic elements); default ``strip_width`` for every node.
+    node_column : ndarray of int, optional
+        Column of tasselli of each node where the columns are not groups of
+        ``strips_per_column`` strips (the cross-section tire: bands of equal width over columns
+        of unequal width); ``strip_width * strips_per_column`` is then the columns' width.
     """
     column_width = strip_width * strips_per_column
     if column_width > MAX_TASSELLO_SIZE + 1e-12 or target_length > MAX_TASSELLO_SIZE + 1e-12:
@@ -224,7 +229,7 @@ def tassellate(
     centre = 0.5 * n_rows
     rows = np.where(pos < centre, np.floor(pos + 1e-9), np.ceil(pos - 1e-9) - 1).astype(int)
     rows = np.clip(rows, 0, n_rows - 1)
-    columns = node_strip // strips_per_column
+    columns = node_strip // strips_per_column if node_column is None else np.asarray(node_column, int)
     # numbering: row by row from the leading edge, left to right
     key = rows * (columns.max() + 1) + columns
     unique_keys, node_tassello = np.unique(key, return_inverse=True)

@@ -50,16 +50,20 @@ def test_the_experiment_runs_what_its_conditions_say(paper_test, drum_tire):
     assert paper_test.static.road.drum_radius == test.drum_radius
 
 
-@pytest.mark.parametrize("speed_kmh", [30.0, 60.0])
+@pytest.mark.parametrize(
+    "tire, speed_kmh",
+    [("165_65R14", 30.0), ("165_65R14", 60.0), ("165_65R14_cross_section", 30.0), ("165_65R14_cross_section", 60.0)],
+)
 @pytest.mark.filterwarnings("ignore:decay components above the 250 Hz band")  # the fits are not held above it
-def test_rm_chain_matches_the_fe_model(speed_kmh):
+def test_rm_chain_matches_the_fe_model(tire, speed_kmh):
     """Second method: fitted state space in time vs direct FE FRFs in frequency.
 
     Both see the same record and band; what separates them is the fits (<= 1 % per tassello, the
     order rule's tolerance) and the first-order hold: 1 % bounds the peak, 2 % the RMS difference
-    (at 60 km/h the input reaches the top of the band, where the fits are worst).
+    (at 60 km/h the input reaches the top of the band, where the fits are worst). Both tire
+    models: the cross-section tire's FE side is its harmonic solve, tassello by tassello.
     """
     conditions = ru.experiments.cleat_conditions(dynamic_kmh=speed_kmh)
-    check = ru.experiments.cleat_test("165_65R14", conditions=conditions, fe_reference=True).fe_reference
+    check = ru.experiments.cleat_test(tire, conditions=conditions, fe_reference=True).fe_reference
     assert abs(check.peak_difference) < 0.01
     assert check.rms_difference < 0.02

@@ -1,4 +1,5 @@
-"""Cached stages: an edited conditions, tire or road file invalidates exactly the stages that read it."""
+"""Cached stages: an edited conditions, tire or road file invalidates exactly the stages that read it;
+the tire file's model chooses the numerics behind them."""
 
 from __future__ import annotations
 
@@ -9,8 +10,9 @@ import numpy as np
 import pytest
 
 import roadnoise_utils as ru
-from roadnoise_utils.repro import cache
+from roadnoise_utils.repro import cache, stages
 from roadnoise_utils.repro.paths import data_dir
+from roadnoise_utils.tire.section_static import SectionStaticState
 
 
 @pytest.fixture
@@ -76,3 +78,24 @@ def test_editing_a_road_file_recomputes_no_tire_stage(data_copy):
     after, computed = _computed_during(lambda: ru.experiments.road_test("195_65R15", short).inputs["rough"].u)
     assert computed == set()
     assert np.allclose(after, 2 * before, rtol=1e-9, atol=1e-12)
+
+
+CROSS_SECTION = "165_65R14_cross_section"
+
+
+def test_the_stages_run_the_tire_model_its_file_names():
+    """A cross-section tire file runs its own static and footprint solves behind the same stage
+    functions, and the ring-only stages refuse it before any work."""
+    static = stages.solve_static(CROSS_SECTION)
+    assert isinstance(static, SectionStaticState) and stages.model_name(CROSS_SECTION) == "cross-section"
+    visco = stages.frf_visco(CROSS_SECTION)
+    assert visco.H.shape == (static.tasselli.n, stages.DEFAULT_FREQS.size)
+    part = stages.frf_visco(CROSS_SECTION, freqs=[0.0, 80.0, 250.0])  # read from the default grid
+    np.testing.assert_array_equal(part.H, visco.H[:, [0, 80, 250]])
+    assert stages.rim_side_mass(CROSS_SECTION) == 0.0 < stages.rim_side_mass("165_65R14")
+    with pytest.raises(ValueError, match="stick = True"):
+        stages.frf_visco(CROSS_SECTION, stick=True)
+    with pytest.raises(ValueError, match="loaded_modes runs on ring tires"):
+        stages.loaded_modes(CROSS_SECTION)
+    with pytest.raises(ValueError, match="one_sided_run runs on ring tires"):
+        stages.one_sided_run(CROSS_SECTION, 0.0, 0.015, 0.015, "triangle", 1.25, (-0.1, 0.1))
