@@ -21,7 +21,7 @@ LAYERS = [
     ["repro.cache", "repro.style", "repro.inputs"],
     ["repro.stages", "repro.section_stages"],
     ["experiments"],
-    ["repro.claims", "repro.collection"],
+    ["repro.claims", "repro.collection", "repro.evaluators"],
     ["figures"],
     ["repro.reproduce", "repro", "__init__", "__main__"],
 ]

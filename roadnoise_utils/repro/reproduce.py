@@ -239,16 +239,11 @@ def reproduce(
 
 
 def _summary(table, where: Path) -> int:
-    failures = claims.unexpected_failures(table)
-    deviations = table[(table["verdict"] == "fail") & (table["known deviation"] != "")]
-    print(
-        f"report: {where / 'reproduction-report.md'} and .csv: {int((table['verdict'] == 'pass').sum())} of "
-        f"{len(table)} claims reproduced, {len(deviations)} documented deviations, {len(failures)} unexpected failures"
-    )
-    for cid in failures.index:
-        print(
-            f"  FAILED: {cid}: {table.loc[cid, 'claim']} (paper {table.loc[cid, 'paper']}, ours {table.loc[cid, 'ours']})"
-        )
+    print(f"report: {where / 'reproduction-report.md'} and .csv")
+    for line in claims.summary(table).splitlines():
+        print(f"  {line}")
+    for cid, row in claims.unexpected_failures(table).iterrows():
+        print(f"  FAILED: {cid}: {row['claim']} (paper {row['paper']})")
     return claims.exit_status(table)
 
 

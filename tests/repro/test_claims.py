@@ -22,19 +22,41 @@ SMALL = [
 
 
 def test_report_passes_fails_and_deviations(tmp_path):
-    table = claims.report(claims=SMALL, evaluators={"a": lambda: 10.5, "b": lambda: 0.5, "c": lambda: 9.0})
-    assert list(table["verdict"]) == ["pass", "pass", "fail"]
+    table = claims.report(
+        claims=SMALL, evaluators={"a": lambda m: 10.5, "b": lambda m: 0.5, "c": lambda m: 9.0}, models=("ring",)
+    )
+    assert list(table["verdict (ring)"]) == ["pass", "pass", "fail"]
     assert claims.exit_status(table) == 0  # the only failure is documented
     csv_path, md_path = claims.write_report(table, tmp_path)
     assert csv_path.read_text().count("\n") == 4
     text = md_path.read_text()
-    assert "2 of 3 claims reproduced" in text and "known deviation: c" in text and "explained" in text
+    assert "ring: 2 of 3 claims reproduced" in text and "known deviation: [ring: c]" in text and "explained" in text
+
+
+def test_each_tire_model_gets_its_column_deviations_and_exemptions():
+    """A claim judged per model: the cross-section column has its own deviation and n/a reasons."""
+    two = [
+        {**SMALL[0], "known_deviation_cross_section": "why the cross-section tire differs"},
+        {**SMALL[1], "not_applicable_cross_section": "no such thing on this model"},
+    ]
+    values = {"ring": 10.0, "cross-section": 20.0}
+    evaluated = []
+    table = claims.report(claims=two, evaluators={"a": values.get, "b": lambda m: evaluated.append(m) or 0.5})
+    assert evaluated == ["ring"]  # not run where it does not apply
+    assert list(table["verdict (ring)"]) == ["pass", "pass"]
+    assert list(table["verdict (cross-section)"]) == ["fail", "n/a"]
+    assert claims.exit_status(table) == 0
+    assert claims.counts(table, "cross-section") == {"claims": 2, "pass": 0, "deviations": 1, "unexpected": 0, "n/a": 1}
+    assert "a: ring pass, cross-section fail (documented deviation)" in claims.verdicts(table)
+    assert "no such thing on this model" in claims.to_markdown(table)
 
 
 def test_an_undocumented_failure_makes_the_exit_status_non_zero(tmp_path, monkeypatch):
-    failing = claims.report(claims=SMALL, evaluators={"a": lambda: 20.0, "b": lambda: 0.5, "c": lambda: 5.0})
+    failing = claims.report(
+        claims=SMALL, evaluators={"a": lambda m: 20.0, "b": lambda m: 0.5, "c": lambda m: 5.0}, models=("ring",)
+    )
     assert claims.exit_status(failing) == 1
-    with pytest.raises(AssertionError, match="a .paper 10, ours 20"):
+    with pytest.raises(AssertionError, match="a on ring .paper 10, ours 20"):
         claims.check(failing)
     monkeypatch.setattr(claims, "report", lambda: failing)
     assert reproduce.main(["--report-only", "--figures", str(tmp_path)]) == 1

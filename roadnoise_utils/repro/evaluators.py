@@ -1,0 +1,200 @@
+"""Our number for each of the paper's claims, on either tire model (:mod:`.claims` judges them).
+
+Each evaluator takes the tire model (``"ring"`` or ``"cross-section"``) and runs the paper's
+experiment on that model's tire files (:data:`TIRES`): the 165/65 R14 of the cleat test and
+the FE-model claims, the 195/65 R15 of the moving-hub check and the quarter car. Whatever a
+notebook's parameters, the claims are always evaluated on these. Shared inputs are computed
+once per model (``functools.cache`` over the cached stages).
+"""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Callable
+
+import numpy as np
+
+from ..analysis import band_errors, distinct_peaks, peak_comparison, resonance_peaks
+from ..experiments.cleat import CleatTest, cleat_test
+from ..experiments.corner import PAPER_CAR, QuarterCarTest, quarter_car
+from ..experiments.moving_hub import moving_hub_check
+from ..experiments.one_sided_cleat import OneSidedCleatTest, one_sided_cleat_test
+from ..response.frf import FRFResult
+from ..rm.fitting import fit_tasselli
+from ..road.kernels import tassellation_error
+from ..vehicle.quarter_car import FrequencyBand, load_vehicle, transmissibility_statistics
+from ..vehicle.spectra import band_rms, power_share
+from . import section_stages, stages
+from .paths import data_dir, read_toml
+
+#: The tire models, in the report's column order.
+MODELS = ("ring", "cross-section")
+#: Each model's tire files: ``paper`` (165/65 R14: the cleat test, the FE-model claims) and
+#: ``check`` (195/65 R15: the moving-hub check and the quarter car of Fig. 10-14).
+TIRES = {
+    "ring": {"paper": "165_65R14", "check": "195_65R15"},
+    "cross-section": {"paper": "165_65R14_cross_section", "check": "195_65R15_cross_section"},
+}
+
+
+def tire_of(model: str, role: str = "paper") -> str:
+    """The tire file of ``model`` for a role (``"paper"`` or ``"check"``)."""
+    if model not in TIRES:
+        raise ValueError(f"model = {model!r}: valid values are {list(TIRES)}")
+    return TIRES[model][role]
+
+
+# ---------------------------------------------------------------- shared inputs, each computed once per model
+
+
+@functools.cache
+def _visco(model: str) -> FRFResult:
+    return stages.frf_visco(tire_of(model))
+
+
+@functools.cache
+def _cleat(model: str) -> CleatTest:
+    return cleat_test(tire_of(model))
+
+
+@functools.cache
+def _contact(model: str) -> OneSidedCleatTest:
+    return one_sided_cleat_test(tire_of(model))
+
+
+@functools.cache
+def _quarter_car(model: str) -> QuarterCarTest:
+    return quarter_car(PAPER_CAR, tire=tire_of(model, "check"))
+
+
+def transmissibility_bands() -> dict[str, FrequencyBand]:
+    """The paper's Fig. 10 claims as bands: ``claim id -> FrequencyBand`` (Hz, statistic of |T|, label)."""
+    claims = read_toml(data_dir() / "paper" / "claims.toml")["claim"]
+    return {c["id"]: FrequencyBand(*c["band"], c["statistic"], c["label"]) for c in claims if "band" in c}
+
+
+@functools.cache
+def _transmissibility_stats() -> dict[str, float]:
+    """The vehicle's hub -> upper-mount statistics (Fig. 10): no tire in them, the same on both models."""
+    return transmissibility_statistics(load_vehicle(PAPER_CAR), transmissibility_bands())
+
+
+# ---------------------------------------------------------------- one evaluator per claim
+
+
+def _fe_dof(model: str) -> float:
+    if model == "ring":
+        return float(stages.build_fet(tire_of(model)).n_dof)
+    tire = section_stages.section_tire(tire_of(model))
+    return float(tire.ops.free.size * (2 * tire.harmonics + 1))  # a 3-D mesh of the same resolution (2N + 1 stations)
+
+
+def _first_vertical_resonance(model: str) -> float:
+    v = _visco(model)
+    return float(resonance_peaks(v.freqs, v.H_tot)[0][0])
+
+
+def _superposition(model: str) -> float:
+    v = _visco(model)
+    return float(np.max(np.abs(v.H_sum - v.H_tot) / np.abs(v.H_tot)))
+
+
+def _footprint_slip(model: str) -> float:
+    v = _visco(model)
+    keep = v.freqs <= 300
+    sliding = stages.frf_visco(tire_of(model), freqs=v.freqs[keep], stick=False)
+    return float(band_errors(v.freqs[keep], v.H_tot[keep], sliding.H_tot)["complex rel. RMS"].max())
+
+
+def _frozen_underestimates(model: str) -> float:
+    reduced = stages.modal_reduction(tire_of(model))
+    v = _visco(model)
+    peaks = peak_comparison(v.freqs, v.H_tot, reduced.frf.H_tot, f_max=260.0)
+    above = peaks["reference (Hz)"] > reduced.reference_frequency + 5.0
+    return float(peaks.loc[above, "shift (%)"].max())
+
+
+def _paper_modal_errors(model: str) -> np.ndarray:
+    v = _visco(model)
+    paper = stages.modal_reduction(tire_of(model), frozen="storage", damping="identified")
+    return band_errors(v.freqs, v.H_tot, paper.frf.H_sum)["complex rel. RMS"].to_numpy()
+
+
+def _eight_poles(model: str) -> float:
+    v = _visco(model)
+    return float(fit_tasselli(v.freqs, v.H, n_poles=8).rms_errors.max())
+
+
+def _fig6_fit(model: str) -> float:
+    static = stages.solve_static(tire_of(model))
+    centre = int(np.argmin(np.hypot(static.tasselli.centre_x, static.tasselli.centre_y)))
+    return float(stages.fit_tasselli(tire_of(model))[centre].rms_error)
+
+
+def _moving_hub(model: str) -> float:
+    check = moving_hub_check(tire_of(model, "check"), freqs=np.arange(2.0, 251.0, 4.0))
+    return check.errors()["hub force F_M"]
+
+
+def _resolution(model: str) -> float:
+    tire = tire_of(model, "check")
+    v = stages.frf_visco(tire)
+    k = int(np.argmin(np.abs(v.freqs - 100.0)))
+    return float(tassellation_error(stages.solve_static(tire), v.H_points[:, k], [0.05])[0])
+
+
+def _fig14_modes(model: str) -> float:
+    test = _quarter_car(model)
+    f = np.arange(40.0, 221.0, 1.0)
+    psd = test.setup.predicted(f, test.conditions.spectra()["rough"], test.conditions.speed)["a_hub"]
+    return float(resonance_peaks(f, np.sqrt(psd), min_ratio=0.0)[0].size)
+
+
+def _hub_rms(model: str, texture: str) -> float:
+    return band_rms(_quarter_car(model).spectra[texture]["a_hub"])
+
+
+def _low_share(model: str, texture: str, output: str) -> float:
+    return power_share(_quarter_car(model).spectra[texture][output], 0.0, 50.0)
+
+
+def _two_peaks(model: str, which: str) -> float:
+    """Distinct peaks (prominence >= 10 % of the largest force) while the cleat passes."""
+    if which == "linear":
+        run = _cleat(model).quasi_static.result
+        return float(distinct_peaks(run.distance, run.force, (-np.inf, np.inf)))
+    run = _contact(model).dynamic
+    return float(distinct_peaks(run.distance, run.hub_force, (-0.15, 0.15)))
+
+
+EVALUATORS: dict[str, Callable[[str], float]] = {
+    "fe_dof": _fe_dof,
+    "n_tasselli": lambda m: float(stages.solve_static(tire_of(m)).tasselli.n),
+    "first_vertical_resonance": _first_vertical_resonance,
+    "superposition": _superposition,
+    "footprint_slip": _footprint_slip,
+    "freezing_frequency": lambda m: stages.modal_reduction(tire_of(m)).reference_frequency,
+    "frozen_underestimates": _frozen_underestimates,
+    "fig5_match": lambda m: float(_paper_modal_errors(m)[0]),
+    "fig5_degrades": lambda m: float(_paper_modal_errors(m)[-1] / _paper_modal_errors(m)[0]),
+    "eight_poles": _eight_poles,
+    "fig6_fit": _fig6_fit,
+    "cleat_two_peaks": lambda m: _two_peaks(m, "linear"),
+    "cleat_quasi_static": lambda m: _cleat(m).quasi_static.peak_force,
+    "cleat_dynamic": lambda m: _cleat(m).dynamic.peak_force,
+    "moving_hub": _moving_hub,
+    "hub_poles": lambda m: float(stages.fit_hub(tire_of(m, "check")).n_poles),
+    "resolution_5cm": _resolution,
+    "fig10_low": lambda m: _transmissibility_stats()["fig10_low"],
+    "fig10_mid": lambda m: _transmissibility_stats()["fig10_mid"],
+    "fig10_high": lambda m: _transmissibility_stats()["fig10_high"],
+    "fig11_low_frequency": lambda m: _low_share(m, "rough", "a_hub"),
+    "fig12_equalized": lambda m: _low_share(m, "rough", "a_mount"),
+    "fig11_textures": lambda m: _hub_rms(m, "rough") / _hub_rms(m, "smooth"),
+    "fig14_modes": _fig14_modes,
+    "contact_two_peaks": lambda m: _two_peaks(m, "contact"),
+    "contact_quasi_static": lambda m: _contact(m).quasi_static.peak_force,
+    "contact_dynamic": lambda m: _contact(m).dynamic.peak_force,
+    "contact_ratio": lambda m: _contact(m).ratio,
+    "contact_decay": lambda m: float(_contact(m).decay["frequency (Hz)"].iloc[0]),
+}
