@@ -21,6 +21,12 @@ stage                     caches
 ========================  ==================================================================
 
 :func:`load_tire`, :func:`build_fet` and :func:`assemble_fixed_hub` are fast and not cached.
+
+The tire file's ``[tire] model`` chooses the numerics: for a cross-section tire
+:func:`solve_static`, :func:`frf_visco` and :func:`fe_cleat_response` run
+:mod:`.section_stages` and return the same types, so the fits, the state space, the cleat test,
+the moving hub and the quarter car run unchanged; :func:`loaded_modes`,
+:func:`modal_reduction` and :func:`one_sided_run` are ring-only and refuse it.
 """
 
 from __future__ import annotations
@@ -40,6 +46,7 @@ from ..road.input import BAND, RoadInput
 from ..tire import ring_model, section_static, spec, static
 from ..tire.cross_section import CrossSectionSpec
 from ..tire.ring_model import FETModel
+from ..tire.section_static import SectionStaticState
 from ..tire.spec import TireSpec
 from ..tire.static import StaticState
 from . import section_stages
@@ -108,7 +115,7 @@ def _finite(inputs: dict) -> float | None:
 
 def solve_static(
     tire: Tire, road: str = "flat", load: float | None = None, drum_radius: float | None = None
-) -> StaticState:
+) -> StaticState | SectionStaticState:
     """The loaded tire (cached): :func:`roadnoise_utils.tire.static.solve_static` for a ring tire,
     :func:`.section_stages.section_static` for a cross-section tire; ``drum_radius`` (m) is required for a drum."""
     if is_cross_section(tire):
