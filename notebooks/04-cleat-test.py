@@ -301,13 +301,14 @@ for model, rows in section_rows.items():
 # %% [markdown]
 # The tire built from its cross-section reproduces the *shape* of the paper's simulation — two
 # peaks, a decay led by the first vertical mode near 80 Hz — and the RM chain follows its FE
-# solve within the fit error, as on the ring. It does not reproduce the *size*: its entry row
-# carries about a fifth of $K_v$, not the ~60 % ($\approx$ 150 N/mm) the paper's 1200 N
-# needs. Both of our tires spread a push at the footprint edge over the neighbouring rows,
-# the cross-section tire through its belt's bending and shear, the ring through the same beam
-# on springs. The cross-section tire rings more (dynamic/quasi-static 1.7 against the ring's
-# 1.1 and the paper's 1870/1200 = 1.56). What the linear models cannot do — lose contact
-# next to the cleat — notebook 08 adds on the ring.
+# solve within the fit error, as on the ring. It does not reproduce the *size*: the peak is
+# about the entry row's $H(0)$ times the cleat's mean height over a row (~8 mm), so the
+# paper's 1200 N needs an entry row of ~150 N/mm — well over half of $K_v$ — where ours carries
+# the share printed above. Both of our tires spread a push at the footprint edge over the
+# neighbouring rows, the cross-section tire through its belt's bending and shear, the ring
+# through the same beam on springs. The cross-section tire rings more (its dynamic /
+# quasi-static ratio in the table above, against the paper's own 1870 / 1200 = 1.56). What the
+# linear models cannot do — lose contact next to the cleat — notebook 08 adds on the ring.
 #
 # ## 5. Second method: the RM chain against the full FE model
 #

@@ -243,7 +243,11 @@ def _summary(table, where: Path) -> int:
     for line in claims.summary(table).splitlines():
         print(f"  {line}")
     for cid, row in claims.unexpected_failures(table).iterrows():
-        print(f"  FAILED: {cid}: {row['claim']} (paper {row['paper']})")
+        for model in claims.models_of(table):
+            if row[f"verdict ({model})"] == "fail" and not row[f"deviation ({model})"]:
+                print(
+                    f"  FAILED on {model}: {cid}: {row['claim']} (paper {row['paper']}, ours {row[f'ours ({model})']})"
+                )
     return claims.exit_status(table)
 
 

@@ -118,8 +118,9 @@ def solve_static(
 ) -> StaticState | SectionStaticState:
     """The loaded tire (cached): :func:`roadnoise_utils.tire.static.solve_static` for a ring tire,
     :func:`.section_stages.section_static` for a cross-section tire; ``drum_radius`` (m) is required for a drum."""
+    tire = load_tire(tire)  # the file read once
     if is_cross_section(tire):
-        return section_stages.section_static(load_tire(tire), road, load, drum_radius)
+        return section_stages.section_static(tire, road, load, drum_radius)
     inputs = _loaded(tire, road, load, drum_radius)
 
     def compute() -> StaticState:
@@ -146,13 +147,14 @@ def frf_visco(
     ``None`` or ``False``) and returns the same :class:`FRFResult`.
     """
     freqs = DEFAULT_FREQS if freqs is None else np.asarray(freqs, dtype=float)
+    tire = load_tire(tire)  # the file read once
     if is_cross_section(tire):
         if stick:
             raise ValueError(
                 "stick = True: the cross-section tire's contact points slide freely (frictionless, vertical "
                 "only); valid values are None or False"
             )
-        found = section_stages.section_footprint(load_tire(tire), road, freqs, load, drum_radius, progress)
+        found = section_stages.section_footprint(tire, road, freqs, load, drum_radius, progress)
         return found.to_frf_result()
     stick = True if stick is None else bool(stick)
     inputs = _loaded(tire, road, load, drum_radius)
@@ -288,10 +290,11 @@ def fe_cleat_response(
     (``ru.experiments.cleat_test`` resolves them from ``data/conditions/cleat_test.toml``), so
     editing the conditions changes the key.
     """
+    tire = load_tire(tire)  # the file read once
     if is_cross_section(tire):
         state = solve_static(tire, "drum", drum_radius=drum_radius)
         road = cleat_input(state, speed, height, base, shape, distance)
-        frfs = section_stages.tassello_frfs(load_tire(tire), "drum", drum_radius=drum_radius)
+        frfs = section_stages.tassello_frfs(tire, "drum", drum_radius=drum_radius)
         return road, fe_reference.frequency_domain_response(frfs, road.u, road.dt, band, duration)
     inputs = {
         **_loaded(tire, "drum", None, drum_radius),
