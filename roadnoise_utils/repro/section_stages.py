@@ -6,6 +6,8 @@ stage                       caches
 :func:`section_static`      :func:`roadnoise_utils.tire.section_static.solve_section_static`
 :func:`section_footprint`   :func:`roadnoise_utils.response.section_footprint.footprint_frf`
                             (default 0-400 Hz every 1 Hz)
+:func:`section_modal`       :func:`roadnoise_utils.response.section_modal.section_modal_reduction`
+                            on the default sweep
 ==========================  ==============================================================
 
 :func:`section_tire` (mesh, harmonic matrices and inflation: about half a second) is not cached.
@@ -19,6 +21,8 @@ from pathlib import Path
 import numpy as np
 
 from ..response import section_footprint as footprint
+from ..response import section_modal as modal
+from ..response.modal_reduction import ModalReduction
 from ..response.section_footprint import FootprintFRF
 from ..tire import section_static as static_module
 from ..tire import spec
@@ -97,3 +101,31 @@ def tassello_frfs(
         return section_footprint(tire, road, freqs, load, drum_radius).H_tasselli().T
 
     return frfs
+
+
+def section_modal(
+    tire: SectionTireLike,
+    road: str = "flat",
+    frozen: str = "complex",
+    damping: str = "identified",
+    reference_frequency: float | None = None,
+    load: float | None = None,
+    drum_radius: float | None = None,
+    f_band: float = 250.0,
+) -> ModalReduction:
+    """Cached :func:`.response.section_modal.section_modal_reduction` on the default direct sweep."""
+    inputs = _inputs(tire, road, load, drum_radius)
+    options = {"frozen": frozen, "damping": damping, "reference_frequency": reference_frequency, "f_band": f_band}
+    state = section_static(tire, road, load, drum_radius)
+    visco = section_footprint(tire, road, None, load, drum_radius).to_frf_result()
+
+    def compute() -> ModalReduction:
+        built = build_section_tire(inputs["tire"])
+        return modal.section_modal_reduction(built, state, visco, **options)
+
+    return cached(
+        section_modal,
+        {**inputs, **options},
+        compute,
+        runs=(modal.section_modal_reduction, footprint.footprint_frf, static_module.solve_section_static),
+    )

@@ -23,10 +23,10 @@ stage                     caches
 :func:`load_tire`, :func:`build_fet` and :func:`assemble_fixed_hub` are fast and not cached.
 
 The tire file's ``[tire] model`` chooses the numerics: for a cross-section tire
-:func:`solve_static`, :func:`frf_visco` and :func:`fe_cleat_response` run
-:mod:`.section_stages` and return the same types, so the fits, the state space, the cleat test,
-the moving hub and the quarter car run unchanged; :func:`loaded_modes`,
-:func:`modal_reduction` and :func:`one_sided_run` are ring-only and refuse it.
+:func:`solve_static`, :func:`frf_visco`, :func:`modal_reduction` and :func:`fe_cleat_response`
+run :mod:`.section_stages` and return the same types, so the fits, the state space, the cleat
+test, the moving hub and the quarter car run unchanged; :func:`loaded_modes` and
+:func:`one_sided_run` are ring-only and refuse it.
 """
 
 from __future__ import annotations
@@ -196,11 +196,19 @@ def modal_reduction(
     reference_frequency: float | None = None,
     load: float | None = None,
     drum_radius: float | None = None,
+    f_band: float = 250.0,
 ) -> ModalReduction:
-    """Cached :func:`roadnoise_utils.response.modal_reduction.modal_reduction` on the default direct sweep."""
-    _ring_only(tire, "modal_reduction")
+    """Cached modal reduction (paper Fig. 4) on the default direct sweep, band 0-``f_band`` Hz.
+
+    A ring tire runs :func:`roadnoise_utils.response.modal_reduction.modal_reduction`, a
+    cross-section tire :func:`.section_stages.section_modal` (loaded modes by component-mode
+    synthesis of its harmonics).
+    """
+    tire = load_tire(tire)  # the file read once
+    options = {"frozen": frozen, "damping": damping, "reference_frequency": reference_frequency, "f_band": f_band}
+    if is_cross_section(tire):
+        return section_stages.section_modal(tire, road, load=load, drum_radius=drum_radius, **options)
     inputs = _loaded(tire, road, load, drum_radius)
-    options = {"frozen": frozen, "damping": damping, "reference_frequency": reference_frequency}
     state = solve_static(tire, road, load, drum_radius)
     visco = frf_visco(tire, road, load=load, drum_radius=drum_radius)
 

@@ -244,6 +244,9 @@ class ModalModel:
         Quasi-static :math:`G_H` at the anchors (N/m).
     membership : ndarray (n_tasselli, n_contact)
         Which contact points each tassello moves.
+    hub_mass : complex
+        Mass that moves with the hub and no mode carries (kg): adds :math:`\\omega^2 m` to
+        :math:`G_H` (0 for the ring model, whose rim-side mass is outside :math:`G_H`).
     """
 
     reference_frequency: float
@@ -256,6 +259,7 @@ class ModalModel:
     anchor_points: np.ndarray
     anchor_hub: np.ndarray
     membership: np.ndarray
+    hub_mass: complex = 0.0
 
     @property
     def freqs(self) -> np.ndarray:
@@ -285,6 +289,7 @@ class ModalModel:
         coupling = self.point_gain * self.hub_gain[:, None]  # (modes, points)
         points = self._residual(freqs, self.anchor_points).T - coupling.T @ dyn
         hub = self._residual(freqs, self.anchor_hub[:, None])[:, 0] + (self.hub_gain**2) @ dyn
+        hub = hub + self.hub_mass * w2[0]
         tasselli = self.membership @ points
         return FRFResult(
             freqs=freqs,
@@ -367,7 +372,7 @@ def _frozen_modes(
     return vals, solver.basis_matrix @ vecs
 
 
-def _apply_identified_damping(
+def apply_identified_damping(
     eigenvalues: np.ndarray, hub_gain: np.ndarray, ident: ModeIdentification, frozen: str, f_band: float
 ) -> tuple[np.ndarray, np.ndarray]:
     """Give the identified loss factors to the modes seen in H_tot (matched in order of frequency)."""
@@ -454,7 +459,7 @@ def modal_reduction(
     hub_gain = row @ shapes
     point_gain = ((g_tread.real if storage else g_tread) * (lt.road_input.T @ shapes)).T
     if damping == "identified":
-        eigenvalues, source = _apply_identified_damping(frozen_vals, hub_gain, ident, frozen, f_band)
+        eigenvalues, source = apply_identified_damping(frozen_vals, hub_gain, ident, frozen, f_band)
     else:
         eigenvalues, source = frozen_vals, np.full(frozen_vals.size, "frozen model", dtype=object)
     quasi = [solver.solve(2 * np.pi * f, inertia=False) for f in anchor_freqs]

@@ -242,77 +242,159 @@ def _mirror_pairs(static: SectionStaticState) -> tuple[np.ndarray, np.ndarray, n
     return keep, representative, partner
 
 
+@dataclass(frozen=True, eq=False)
+class EvenFootprint:
+    """The contact points' vertical receptance for fore-aft even fields, ready to evaluate.
+
+    The reduced harmonics (``0..n_dynamic`` with their modes, then the sampled quasi-static
+    ones), the trigonometric weights of the harmonic sums and the mirror pairing, built once
+    for a band (:meth:`build`). :meth:`receptances` gives, per frequency, ``comp`` (R, R) over
+    the representatives (points with ``theta >= 0``): the displacement of representative ``a``
+    per unit vertical force at representative ``b`` *and its mirror*. ``comp = S W`` with
+    ``S`` symmetric and ``W = diag(pair_weight)`` (2 for a mirrored pair, 1 on ``theta = 0``):
+    ``S`` is the receptance of the even coordinates, a pair's displacement per unit total force.
+
+    Attributes
+    ----------
+    tire, static : SectionTire, SectionStaticState
+    harmonics : list of ReducedHarmonic
+        Dynamic harmonics ``0..n_dynamic``, then the sampled quasi-static ones.
+    n_dynamic : int
+    keep, representative, partner : ndarray of int
+        See :func:`_mirror_pairs`.
+    """
+
+    tire: SectionTire
+    static: SectionStaticState
+    harmonics: list
+    n_dynamic: int
+    keep: np.ndarray
+    representative: np.ndarray
+    partner: np.ndarray
+    cos: np.ndarray
+    sin: np.ndarray
+    projection: _Projection
+
+    @classmethod
+    def build(cls, tire: SectionTire, static: SectionStaticState, f_max: float, cutoff: float) -> EvenFootprint:
+        """Reduce the harmonics for ``0..f_max`` Hz, modes below ``cutoff`` Hz (see the module notes)."""
+        keep, representative, partner = _mirror_pairs(static)  # before any work: the set must be symmetric
+        grid = tire.grid
+        with threadpool_limits(1):
+            dynamic = _dynamic_reductions(tire, f_max, cutoff)
+            n_high, basis, high = _high_harmonics(tire, len(dynamic) - 1, f_max)
+        offsets = _offsets(static)
+        col, row = static.points
+        th = grid.theta[row]
+        centre = (offsets.size - 1) // 2
+        direct = row[keep][:, None] - row[keep][None, :] + centre
+        paired = partner >= 0
+        mirrored = row[keep][:, None] - row[partner[paired]][None, :] + centre
+        cos_dyn, sin_dyn = _trig(np.arange(len(dynamic)), offsets, grid.dtheta)
+        cos_high, sin_high = _trig(n_high, offsets, grid.dtheta, basis)
+        projection = _Projection(
+            col[keep], th[keep], col[partner[paired]], th[partner[paired]], direct, mirrored, grid.n_cols
+        )
+        return cls(
+            tire=tire,
+            static=static,
+            harmonics=dynamic + high,
+            n_dynamic=len(dynamic) - 1,
+            keep=keep,
+            representative=representative,
+            partner=partner,
+            cos=np.hstack([cos_dyn, cos_high]),
+            sin=np.hstack([sin_dyn, sin_high]),
+            projection=projection,
+        )
+
+    @property
+    def pair_weight(self) -> np.ndarray:
+        """2 for a representative with a mirror partner, 1 on ``theta = 0`` (R,)."""
+        return np.where(self.partner >= 0, 2.0, 1.0)
+
+    def receptances(self, omegas: np.ndarray, laws: dict | None = None, inertia: bool = True):
+        """``comp`` at angular frequencies ``omegas`` (rad/s), in blocks: yields ``(slice, (b, R, R))``.
+
+        ``laws`` default the tire's own (frequency-dependent) compound laws.
+        """
+        ops = self.tire.ops
+        laws = ops.laws if laws is None else laws
+        c = self.tire.grid.n_cols
+        paired = self.partner >= 0
+        flat = np.empty((self.cos.shape[1], BLOCK, 4 * c * c), complex)
+
+        def fill(k: int, block: np.ndarray) -> None:
+            flat[k, : block.size] = self.harmonics[k].receptance(laws, block, inertia).reshape(block.size, -1)
+
+        # LAPACK releases the GIL: two harmonics at a time
+        with ThreadPoolExecutor(max_workers=2) as workers:
+            for start in range(0, len(omegas), BLOCK):
+                part = slice(start, min(start + BLOCK, len(omegas)))
+                block = np.asarray(omegas[part], float)
+                with threadpool_limits(1):
+                    list(workers.map(fill, range(len(self.harmonics)), repeat(block)))
+                sums = _angular(flat[:, : block.size], self.cos, self.sin, c)
+                # an even displacement field: h(j, -a) = h(j, a); the mirrored column adds to its partner
+                yield part, np.stack([self.projection.even(s, paired) for s in sums])
+
+    def footprint(
+        self, freqs: np.ndarray, laws: dict | None = None, inertia: bool = True, progress: bool = False
+    ) -> FootprintFRF:
+        """The :class:`FootprintFRF` at ``freqs`` (Hz) with these reductions (``laws``: see :meth:`receptances`)."""
+        tire, static = self.tire, self.static
+        freqs = np.asarray(freqs, float)
+        with threadpool_limits(1):
+            rim = rim_transfer(tire.ops, tire.grid.dofs, 2 * np.pi * freqs, inertia, laws)
+        col, row = static.points
+        th = tire.grid.theta[row]
+        c = tire.grid.n_cols
+        spread = np.sinc(tire.grid.dtheta / (2 * np.pi))
+        transfer = (-(np.cos(th) ** 2) * rim.contact[:, col] + np.sin(th) ** 2 * rim.contact[:, c + col]) * spread
+        hub = np.empty((freqs.size, col.size), complex)
+        blocks = self.receptances(2 * np.pi * freqs, laws, inertia)
+        if progress:
+            from tqdm.auto import tqdm
+
+            blocks = tqdm(blocks, total=-(-freqs.size // BLOCK), desc="footprint FRF")
+        for part, comps in blocks:
+            for comp, f_index in zip(comps, range(part.start, part.stop)):
+                hub[f_index] = sla.solve(comp, transfer[f_index, self.keep])[self.representative]
+        return FootprintFRF(
+            freqs=freqs, hub=hub, transfer=transfer, free_rim=rim.free_rim, static=static, n_dynamic=self.n_dynamic
+        )
+
+
 def footprint_frf(
     tire: SectionTire,
     static: SectionStaticState,
     freqs: np.ndarray,
     cutoff_factor: float = 2.5,
     progress: bool = False,
+    inertia: bool = True,
 ) -> FootprintFRF:
     """The footprint's hub-force transfer of a loaded cross-section tire (see the module notes).
 
     Parameters
     ----------
     tire, static : SectionTire, SectionStaticState
-    freqs : ndarray
-        Frequencies (Hz), ascending, >= 0.
         The contact set must be fore-aft symmetric (flat road or drum: the static solves are);
         the solve works on its mirror-even half.
+    freqs : ndarray
+        Frequencies (Hz), ascending, >= 0.
     cutoff_factor : float
         Harmonics with a mode below ``cutoff_factor * max(freqs)`` are reduced with those modes;
         at 2.5 the first harmonic without one is within 1.1e-3 of its direct solve at f_max
         (4e-3 at 2.0).
+    inertia : bool
+        ``False``: the quasi-static response (no inertia, moduli at each frequency), the
+        residual anchors of the modal reduction.
     """
     freqs = _check_inputs(tire, static, freqs)
-    keep, representative, partner = _mirror_pairs(static)  # before any work: the set must be symmetric
+    _mirror_pairs(static)  # before any work: the set must be symmetric
     f_max = float(freqs.max())
-    grid, ops = tire.grid, tire.ops
-    c = grid.n_cols
-    cutoff = cutoff_factor * f_max
-    with threadpool_limits(1):
-        dynamic = _dynamic_reductions(tire, f_max, cutoff)
-        n_dyn = len(dynamic) - 1
-        offsets = _offsets(static)
-        n_high, basis, high = _high_harmonics(tire, n_dyn, f_max)
-        rim = rim_transfer(ops, grid.dofs, 2 * np.pi * freqs)
-    col, row = static.points
-    th = grid.theta[row]
-    spread = np.sinc(grid.dtheta / (2 * np.pi))
-    transfer = (-(np.cos(th) ** 2) * rim.contact[:, col] + np.sin(th) ** 2 * rim.contact[:, c + col]) * spread
-    centre = (offsets.size - 1) // 2
-    direct = row[keep][:, None] - row[keep][None, :] + centre
-    paired = partner >= 0
-    mirrored = row[keep][:, None] - row[partner[paired]][None, :] + centre
-    hub = np.empty((freqs.size, col.size), complex)
-    cos_dyn, sin_dyn = _trig(np.arange(n_dyn + 1), offsets, grid.dtheta)
-    cos_high, sin_high = _trig(n_high, offsets, grid.dtheta, basis)
-    cos, sin = np.hstack([cos_dyn, cos_high]), np.hstack([sin_dyn, sin_high])
-    blocks = range(0, freqs.size, BLOCK)
-    if progress:
-        from tqdm.auto import tqdm
-
-        blocks = tqdm(blocks, desc="footprint FRF")
-    projection = _Projection(col[keep], th[keep], col[partner[paired]], th[partner[paired]], direct, mirrored, c)
-    flat = np.empty((cos.shape[1], BLOCK, 4 * c * c), complex)
-
-    harmonics = dynamic + high  # dynamic ones, then the sampled quasi-static ones (rows of flat)
-
-    def fill(k: int, omegas: np.ndarray) -> None:
-        flat[k, : omegas.size] = harmonics[k].receptance(ops.laws, omegas).reshape(omegas.size, -1)
-
-    # LAPACK releases the GIL: two harmonics at a time
-    with ThreadPoolExecutor(max_workers=2) as workers:
-        for start in blocks:
-            part = slice(start, min(start + BLOCK, freqs.size))
-            omegas = 2 * np.pi * freqs[part]
-            with threadpool_limits(1):
-                list(workers.map(fill, range(len(harmonics)), repeat(omegas)))
-            sums = _angular(flat[:, : omegas.size], cos, sin, c)
-            for k, f_index in enumerate(range(part.start, part.stop)):
-                # an even displacement field: h(j, -a) = h(j, a); the mirrored column adds to its partner
-                comp = projection.even(sums[k], paired)
-                hub[f_index] = sla.solve(comp, transfer[f_index, keep])[representative]
-    return FootprintFRF(freqs=freqs, hub=hub, transfer=transfer, free_rim=rim.free_rim, static=static, n_dynamic=n_dyn)
+    even = EvenFootprint.build(tire, static, f_max, cutoff_factor * f_max)
+    return even.footprint(freqs, inertia=inertia, progress=progress)
 
 
 class _Projection:

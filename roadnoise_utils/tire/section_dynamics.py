@@ -24,7 +24,7 @@ carries a vertical hub force (:func:`rim_vector`).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 import scipy.linalg as sla
@@ -42,6 +42,7 @@ class Projected:
     gas: np.ndarray
     mass: np.ndarray
     contact: np.ndarray  # (k, d): basis values at the contact DOF
+    momentum: np.ndarray  # (k,): vertical momentum per unit coordinate (kg), zero unless n = 1
 
     def dynamic_stiffness(self, laws: dict, omegas: np.ndarray, inertia: bool = True) -> np.ndarray:
         """Projected :math:`K_n(\\omega) - \\omega^2 M_n`, (n_omega, k, k) complex."""
@@ -65,9 +66,9 @@ class ReducedHarmonic:
     projected: Projected
     n_modes: int
 
-    def receptance(self, laws: dict, omegas: np.ndarray) -> np.ndarray:
-        """:math:`F_n(\\omega)` at the contact DOF (m/N), (n_omega, d, d) complex."""
-        d = self.projected.dynamic_stiffness(laws, omegas)
+    def receptance(self, laws: dict, omegas: np.ndarray, inertia: bool = True) -> np.ndarray:
+        """:math:`F_n(\\omega)` at the contact DOF (m/N), (n_omega, d, d) complex; quasi-static without ``inertia``."""
+        d = self.projected.dynamic_stiffness(laws, omegas, inertia)
         c = self.projected.contact.astype(complex)
         x = np.linalg.solve(d, np.broadcast_to(c, (d.shape[0],) + c.shape))
         return np.matmul(c.T, x)
@@ -86,8 +87,10 @@ def _project(ops: HarmonicOperators, n: int, basis: np.ndarray, position: np.nda
     w = harmonic_weight(n)
     compounds = {name: basis.T @ ((w * ops.compound(name, n)[free][:, free]) @ basis) for name in ops.scaled}
     gas = basis.T @ ((w * ops.gas(n)[free][:, free]) @ basis)
-    mass = basis.T @ ((w * ops.mass[free][:, free]) @ basis)
-    return Projected(compounds=compounds, gas=gas, mass=mass, contact=basis[position].T)
+    mass_ff = w * ops.mass[free][:, free]
+    mass = basis.T @ (mass_ff @ basis)
+    momentum = basis.T @ (mass_ff @ rigid_vertical(ops)[free]) if n == 1 else np.zeros(basis.shape[1])
+    return Projected(compounds=compounds, gas=gas, mass=mass, contact=basis[position].T, momentum=momentum)
 
 
 def harmonic_modes(ops: HarmonicOperators, n: int, omega: float, cutoff: float, max_modes: int = 40) -> np.ndarray:
@@ -153,6 +156,45 @@ def ritz_error(ops: HarmonicOperators, reduced: ReducedHarmonic, dofs: np.ndarra
     return float(np.abs(red - ref).max() / np.abs(ref).max())
 
 
+def rigid_vertical(ops: HarmonicOperators) -> np.ndarray:
+    """Field of a unit upward rigid translation of the whole tire in harmonic ``n = 1`` (all DOF).
+
+    With ``theta`` from the bottom, ``u_r = -cos(theta)`` and ``u_theta = sin(theta)``: ``a_r = -1``,
+    ``a_theta = 1`` at every node. ``t^T M_1 t`` is the tire's mass; ``t^T M_1 phi`` a mode's
+    vertical momentum (participation).
+    """
+    t = np.zeros(ops.n_dof)
+    t[0::3] = -1.0
+    t[1::3] = 1.0
+    return t
+
+
+def tire_mass(ops: HarmonicOperators) -> float:
+    """Mass of the whole tire (kg), from the ``n = 1`` mass matrix and a rigid vertical translation."""
+    t = rigid_vertical(ops)
+    return float(t @ (ops.mass_matrix(1) @ t))
+
+
+@dataclass(frozen=True)
+class FrozenLaw:
+    """A compound law frozen at one frequency: the same complex modulus ratio at every frequency."""
+
+    value: complex
+
+    def ratio(self, omega) -> np.ndarray:
+        """The frozen ratio, shaped like ``omega``."""
+        return np.full(np.shape(omega), self.value, dtype=complex)
+
+
+def frozen_laws(laws: dict, omega: float, storage_only: bool = False) -> dict[str, FrozenLaw]:
+    """Every law frozen at ``omega`` (rad/s): the complex ratio, or only its real (storage) part."""
+    out = {}
+    for name, law in laws.items():
+        g = complex(law.ratio(omega))
+        out[name] = FrozenLaw(complex(g.real) if storage_only else g)
+    return out
+
+
 def rim_vector(ops: HarmonicOperators) -> np.ndarray:
     """Bead-DOF field of a unit upward rim motion in harmonic ``n = 1`` (full DOF vector)."""
     t = np.zeros(ops.n_dof)
@@ -181,8 +223,12 @@ class RimTransfer:
     free_rim: np.ndarray
 
 
-def rim_transfer(ops: HarmonicOperators, dofs: np.ndarray, omegas: np.ndarray) -> RimTransfer:
+def rim_transfer(
+    ops: HarmonicOperators, dofs: np.ndarray, omegas: np.ndarray, inertia: bool = True, laws: dict | None = None
+) -> RimTransfer:
     """Exact ``n = 1`` rim transfer by sparse solves, one per frequency.
+
+    Quasi-static without ``inertia``; ``laws`` replace the tire's compound laws (e.g. frozen ones).
 
     The hub force of a load ``Q`` (generalised ``n = 1`` forces) is the rim's reaction: with the
     rim fixed, ``u_f = D_ff^{-1} Q`` and the force on the rim is ``-t^T D_bf u_f`` where ``t`` is
@@ -190,12 +236,17 @@ def rim_transfer(ops: HarmonicOperators, dofs: np.ndarray, omegas: np.ndarray) -
     """
     free, fixed = ops.free, ops.fixed
     position = _free_positions(ops, dofs)
+    if laws is not None:
+        ops = replace(ops, laws=laws)
     t = rim_vector(ops)
     t_b = t[fixed]
     out = np.empty((len(omegas), dofs.size), complex)
     free_rim = np.empty(len(omegas), complex)
     for i, omega in enumerate(omegas):
-        d = (ops.stiffness(1, omega) - omega**2 * ops.mass_matrix(1)).tocsr()
+        d = ops.stiffness(1, omega)
+        if inertia:
+            d = d - omega**2 * ops.mass_matrix(1)
+        d = d.tocsr()
         d_ff = d[free][:, free].tocsc()
         d_fb = d[free][:, fixed]
         z = spla.splu(d_ff).solve(np.asarray(d_fb @ t_b, complex).ravel())  # D_ff^{-1} D_fb t (D symmetric)

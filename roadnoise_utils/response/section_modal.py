@@ -1,0 +1,298 @@
+"""Modal reduction of the cross-section tire: the paper's Fig. 4 procedure on the harmonic model.
+
+The paper freezes the moduli at the most relevant vertical mode (~70 Hz, FET70Hz), computes
+the eigenmodes of the *loaded* tire and builds every local FRF from them with the damping
+identified on :math:`H_{tot}` (section *The FET Model*, Fig. 4-5). The loaded cross-section
+tire's contact points follow the road (bilateral, frictionless), so its eigenmodes are those
+of the tire with the rim fixed and the contact points held vertically. The harmonics are not
+coupled by the tire but by the held points, so the loaded modes come from a component-mode
+synthesis (MacNeal 1971; Craig & Kurdila, *Fundamentals of Structural Dynamics*, ch. 19):
+
+1. **Free modes** (rim fixed, tread free) of every dynamic harmonic at the frozen moduli, below
+   ``f_free``, from the harmonic's Ritz reduction (:mod:`.tire.section_dynamics`): eigenvalues
+   :math:`\\Lambda`, vertical shapes at the contact points :math:`\\Psi` (mirror-even set),
+   vertical momentum :math:`L` (``n = 1`` only).
+2. **Residual flexibility** of everything else (the free modes above ``f_free`` and every
+   quasi-static harmonic): :math:`R = S(0) - \\Psi\\Lambda^{-1}\\Psi^T`, with :math:`S(0)` the
+   frozen static receptance of the even coordinates (:class:`.section_footprint.EvenFootprint`).
+3. **Held points.** Point forces ``Q`` hold the points at the road ``d``:
+   :math:`\\Psi q + R Q = d`, :math:`(\\Lambda - \\omega^2) q = \\Psi^T Q`, so
+
+   .. math:: (K_L - \\omega^2)\\,q = \\Psi^T R^{-1} d, \\qquad K_L = \\Lambda + \\Psi^T R^{-1} \\Psi,
+
+   whose eigenpairs :math:`(\\mu_j, V_j)` are the loaded modes.
+4. **Hub force** from the tire's vertical momentum balance (rim fixed):
+   :math:`F_H = \\mathbf{1}^T Q + \\omega^2 L^T q`. Each loaded mode has the hub gain
+   :math:`a_j = V_j^T(\\mu_j L - \\Psi^T R^{-1}\\mathbf 1)` and the road gain
+   :math:`b_j = V_j^T \\Psi^T R^{-1}`; with the points held and the rim moving, the same
+   :math:`a_j` drive the modes, and the mass the modes do not carry (the beads, the residual)
+   moves with the rim: :math:`m_{res} = m - L^T L`.
+
+The result is the ring model's :class:`.modal_reduction.ModalModel` (mode-acceleration form,
+quasi-static anchors with the moduli at each frequency), so both tire models give the same
+:class:`.modal_reduction.ModalReduction`. :func:`frozen_reference` solves the frozen model
+directly (the footprint solve with frozen laws): the check of steps 1-4.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.linalg as sla
+
+from ..tire.section_dynamics import frozen_laws, tire_mass
+from ..tire.section_static import SectionStaticState, SectionTire
+from .frf import FRFResult
+from .modal_reduction import ModalModel, ModalReduction, apply_identified_damping, identify_modes
+from .section_footprint import EvenFootprint, FootprintFRF
+
+#: Free modes are kept up to ``FREE_FACTOR`` times the highest loaded mode the model must carry.
+FREE_FACTOR = 2.5
+
+
+@dataclass(frozen=True, eq=False)
+class FreeModes:
+    """Free modes (rim fixed, tread free) of the dynamic harmonics at frozen moduli.
+
+    Attributes
+    ----------
+    eigenvalues : ndarray (m,) complex
+        rad^2/s^2.
+    shapes : ndarray (R, m) complex
+        Vertical displacement of each even coordinate (mirror pair) per unit modal coordinate,
+        patch factor included (m).
+    momentum : ndarray (m,) complex
+        Vertical momentum per unit modal coordinate (kg); zero unless ``n = 1``.
+    harmonic, order : ndarray of int (m,)
+        Circumferential harmonic ``n`` and rank within it (1 = lowest).
+    """
+
+    eigenvalues: np.ndarray
+    shapes: np.ndarray
+    momentum: np.ndarray
+    harmonic: np.ndarray
+    order: np.ndarray
+
+
+def free_modes(even: EvenFootprint, laws: dict, f_free: float) -> FreeModes:
+    """Free modes of every dynamic harmonic of ``even`` below ``f_free`` (Hz), moduli from ``laws`` (frozen)."""
+    grid, static = even.tire.grid, even.static
+    col, row = static.points
+    col, theta = col[even.keep], grid.theta[row[even.keep]]
+    c = grid.n_cols
+    lam_cut = (2 * np.pi * f_free) ** 2
+    parts = []
+    for red in even.harmonics[: even.n_dynamic + 1]:
+        n, proj = red.n, red.projected
+        k = proj.dynamic_stiffness(laws, np.zeros(1), inertia=False)[0]
+        vals, vecs = sla.eig(k, proj.mass)
+        order = np.argsort(vals.real)
+        vals, vecs = vals[order], vecs[:, order]
+        keep = vals.real < lam_cut
+        vals, vecs = vals[keep], vecs[:, keep]
+        vecs = vecs / np.sqrt(np.einsum("kr,kr->r", vecs, proj.mass @ vecs))  # X^T M X = I (unconjugated)
+        at = proj.contact.T @ vecs  # (2c, m): r then theta DOF of the columns
+        patch = np.sinc(n * grid.dtheta / (2 * np.pi))
+        shapes = patch * (
+            -(np.cos(theta) * np.cos(n * theta))[:, None] * at[col]
+            + (np.sin(theta) * np.sin(n * theta))[:, None] * at[c + col]
+        )
+        parts.append((vals, shapes, proj.momentum @ vecs, np.full(vals.size, n), np.arange(1, vals.size + 1)))
+    return FreeModes(*(np.concatenate(p, axis=-1) for p in zip(*parts)))
+
+
+@dataclass(frozen=True, eq=False)
+class LoadedModes:
+    """Loaded modes (rim fixed, contact points held) of the frozen model and their gains.
+
+    Attributes
+    ----------
+    eigenvalues : ndarray (j,) complex
+        :math:`\\mu_j` (rad^2/s^2), ascending real part.
+    hub_gain : ndarray (j,) complex
+        :math:`a_j` (N per unit modal coordinate).
+    road_gain : ndarray (j, R) complex
+        :math:`b_j` (modal force per unit displacement of each even coordinate).
+    residual_mass : complex
+        Mass moving with the rim, not carried by the free modes (kg).
+    harmonic, order : ndarray of int (j,)
+        The free mode each loaded mode is mostly made of (harmonic, rank in it).
+    """
+
+    eigenvalues: np.ndarray
+    hub_gain: np.ndarray
+    road_gain: np.ndarray
+    residual_mass: complex
+    harmonic: np.ndarray
+    order: np.ndarray
+
+
+def loaded_modes(even: EvenFootprint, laws: dict, f_free: float) -> LoadedModes:
+    """Steps 1-4 of the module notes for the frozen ``laws``, free modes below ``f_free`` (Hz)."""
+    free = free_modes(even, laws, f_free)
+    weight = even.pair_weight
+    _, static_comp = next(even.receptances(np.zeros(1), laws, inertia=False))
+    static = static_comp[0] / weight[None, :]  # S = comp W^-1
+    residual = static - (free.shapes / free.eigenvalues) @ free.shapes.T
+    residual = 0.5 * (residual + residual.T)
+    r_inv_psi = sla.solve(residual, free.shapes, assume_a="sym")
+    r_inv_one = sla.solve(residual, np.ones(weight.size), assume_a="sym")
+    k_loaded = np.diag(free.eigenvalues) + free.shapes.T @ r_inv_psi
+    mu, vecs = sla.eig(k_loaded)
+    order = np.argsort(mu.real)
+    mu, vecs = mu[order], vecs[:, order]
+    vecs = vecs / np.sqrt(np.einsum("mj,mj->j", vecs, vecs))  # V^T V = I (unconjugated)
+    hub_gain = np.einsum("mj,mj->j", vecs, mu[None, :] * free.momentum[:, None] - (free.shapes.T @ r_inv_one)[:, None])
+    road_gain = vecs.T @ r_inv_psi.T
+    dominant = np.argmax(np.abs(vecs), axis=0)
+    return LoadedModes(
+        eigenvalues=mu,
+        hub_gain=hub_gain,
+        road_gain=road_gain,
+        residual_mass=complex(tire_mass(even.tire.ops) - free.momentum @ free.momentum),
+        harmonic=free.harmonic[dominant],
+        order=free.order[dominant],
+    )
+
+
+def _check_options(frozen: str, damping: str, f_band: float) -> None:
+    if frozen not in ("complex", "storage"):
+        raise ValueError(f"frozen = {frozen!r}: valid values are 'complex' and 'storage'")
+    if damping not in ("model", "identified") or (frozen == "storage" and damping == "model"):
+        raise ValueError(
+            f"damping = {damping!r} with frozen = {frozen!r}: valid are 'model' or 'identified' with "
+            "frozen='complex', and 'identified' with frozen='storage' (the storage model has no loss)"
+        )
+    if not (np.isfinite(f_band) and f_band > 0):
+        raise ValueError(f"f_band = {f_band} Hz: valid range is (0, inf)")
+
+
+def _model_of(
+    modes: LoadedModes, even: EvenFootprint, anchors: FootprintFRF, eigenvalues: np.ndarray, source, f_ref, frozen
+) -> ModalModel:
+    """The ring model's ModalModel from the loaded modes (gains per contact point, anchors)."""
+    weight = even.pair_weight[even.representative]
+    road = modes.road_gain[:, even.representative] / weight[None, :]  # per single point (mirror not moved)
+    return ModalModel(
+        reference_frequency=float(f_ref),
+        frozen=frozen,
+        eigenvalues=eigenvalues,
+        damping_source=source,
+        hub_gain=modes.hub_gain,
+        point_gain=-road,
+        anchor_freqs=anchors.freqs,
+        anchor_points=anchors.hub,
+        anchor_hub=anchors.G_H,
+        membership=even.static.tasselli.membership(),
+        hub_mass=modes.residual_mass,
+    )
+
+
+def section_modal_reduction(
+    tire: SectionTire,
+    static: SectionStaticState,
+    visco: FRFResult,
+    freqs: np.ndarray | None = None,
+    reference_frequency: float | None = None,
+    frozen: str = "complex",
+    damping: str = "identified",
+    f_band: float = 250.0,
+    anchors: tuple[float, ...] = (0.0, 0.1, 0.25, 0.5, 1.0, 1.6),
+) -> ModalReduction:
+    """The paper's Fig. 4 procedure on the cross-section tire (see the module notes).
+
+    Parameters
+    ----------
+    tire, static : SectionTire, SectionStaticState
+    visco : FRFResult
+        Direct FRFs of the viscoelastic model over at least 0-``f_band`` Hz
+        (:meth:`.section_footprint.FootprintFRF.to_frf_result`).
+    freqs : ndarray, optional
+        Frequencies of the returned FRFs (Hz); default those of ``visco``.
+    reference_frequency : float, optional
+        Frozen frequency (Hz); default the identified mode with the largest static share of
+        :math:`H_{tot}(0)`.
+    frozen, damping : str
+        As :func:`.modal_reduction.modal_reduction`.
+    f_band : float
+        Band of the identification (Hz); loaded modes are accurate to ``2 f_band`` (free modes
+        kept to ``FREE_FACTOR * 2 f_band``, every loaded mode they give kept).
+    anchors : tuple of float
+        Quasi-static anchor frequencies as fractions of ``f_band``, 0 first.
+    """
+    _check_options(frozen, damping, f_band)
+    if not isinstance(visco, FRFResult):
+        raise TypeError(f"visco must be an FRFResult (FootprintFRF.to_frf_result()), got {type(visco).__name__}")
+    anchor_freqs = np.asarray(anchors, float) * f_band
+    if anchor_freqs[0] != 0.0 or np.any(np.diff(anchor_freqs) <= 0):
+        raise ValueError("anchors must start at 0 and increase")
+    ident = identify_modes(visco.freqs, visco.H_tot, f_max=f_band)
+    if reference_frequency is None:
+        reference_frequency = float(ident.freqs[np.argmax(np.abs(ident.static_share))])
+    if not (np.isfinite(reference_frequency) and reference_frequency > 0):
+        raise ValueError(f"reference_frequency = {reference_frequency} Hz: valid range is (0, inf)")
+    f_free = FREE_FACTOR * 2 * f_band
+    even = EvenFootprint.build(tire, static, float(anchor_freqs[-1]), f_free)
+    laws = frozen_laws(tire.ops.laws, 2 * np.pi * reference_frequency, storage_only=frozen == "storage")
+    modes = loaded_modes(even, laws, f_free)
+    if damping == "identified":
+        eigenvalues, source = apply_identified_damping(modes.eigenvalues, modes.hub_gain, ident, frozen, f_band)
+    else:
+        eigenvalues, source = modes.eigenvalues, np.full(modes.eigenvalues.size, "frozen model", dtype=object)
+    model = _model_of(
+        modes, even, even.footprint(anchor_freqs, inertia=False), eigenvalues, source, reference_frequency, frozen
+    )
+    return ModalReduction(
+        identification=ident,
+        reference_frequency=float(reference_frequency),
+        model=model,
+        frozen_eigenvalues=modes.eigenvalues,
+        wave_number=modes.harmonic,
+        lateral_order=modes.order,
+        frf=model.frf(visco.freqs if freqs is None else np.asarray(freqs, float)),
+    )
+
+
+def frozen_modal_model(
+    tire: SectionTire,
+    static: SectionStaticState,
+    reference_frequency: float,
+    storage: bool = False,
+    f_band: float = 250.0,
+) -> ModalModel:
+    """The frozen model by the synthesis, every loss its own (no identification, frozen static anchor).
+
+    With :func:`frozen_reference` the two solutions of one model: they differ only by the
+    inertia of what the residual flexibility stands for.
+    """
+    _check_options("storage" if storage else "complex", "identified", f_band)
+    f_free = FREE_FACTOR * 2 * f_band
+    even = EvenFootprint.build(tire, static, 1.6 * f_band, f_free)
+    laws = frozen_laws(tire.ops.laws, 2 * np.pi * float(reference_frequency), storage_only=storage)
+    modes = loaded_modes(even, laws, f_free)
+    anchor = even.footprint(np.zeros(1), laws=laws, inertia=False)
+    source = np.full(modes.eigenvalues.size, "frozen model", dtype=object)
+    frozen = "storage" if storage else "complex"
+    return _model_of(modes, even, anchor, modes.eigenvalues, source, reference_frequency, frozen)
+
+
+def frozen_reference(
+    tire: SectionTire,
+    static: SectionStaticState,
+    freqs: np.ndarray,
+    reference_frequency: float,
+    storage: bool = False,
+    f_band: float = 250.0,
+) -> FootprintFRF:
+    """The frozen model solved directly: the footprint FRF with every law frozen at ``reference_frequency`` (Hz).
+
+    Its harmonics are reduced like those of :func:`section_modal_reduction` with the same
+    ``f_band`` (default anchors), so the two differ only by the residual flexibility's missing
+    inertia: the check of the synthesis.
+    """
+    freqs = np.asarray(freqs, float)
+    _check_options("storage" if storage else "complex", "identified", f_band)
+    even = EvenFootprint.build(tire, static, 1.6 * f_band, FREE_FACTOR * 2 * f_band)
+    laws = frozen_laws(tire.ops.laws, 2 * np.pi * float(reference_frequency), storage_only=storage)
+    return even.footprint(freqs, laws=laws)

@@ -1,0 +1,75 @@
+"""The cross-section tire's modal reduction: loaded modes by component-mode synthesis (Fig. 4-5)."""
+
+import numpy as np
+import pytest
+
+from roadnoise_utils.analysis import band_errors
+from roadnoise_utils.repro import section_stages, stages
+from roadnoise_utils.response import section_modal
+
+TIRE = "165_65R14_cross_section"
+FREQS = np.arange(0.0, 251.0, 5.0)
+
+
+@pytest.fixture(scope="module")
+def built():
+    return section_stages.section_tire(TIRE), section_stages.section_static(TIRE)
+
+
+def _rel_rms(approx, ref, axis=-1):
+    return np.sqrt(np.mean(np.abs(approx - ref) ** 2, axis=axis) / np.mean(np.abs(ref) ** 2, axis=axis))
+
+
+def test_the_synthesis_equals_the_frozen_model_solved_directly(built):
+    """Loaded modes from free modes + residual flexibility vs the footprint solve with the laws
+    frozen at 80 Hz: only the residual's inertia differs (it grows as (f / f_free)^2)."""
+    tire, static = built
+    model = section_modal.frozen_modal_model(tire, static, 80.0)
+    direct = section_modal.frozen_reference(tire, static, FREQS, 80.0)
+    reduced = model.frf(FREQS)
+    assert _rel_rms(reduced.H_tot, direct.H_tot) < 2e-3
+    assert _rel_rms(reduced.G_H, direct.G_H) < 3e-3
+    assert np.abs(reduced.H_points - direct.hub.T).max() < 5e-3 * np.abs(direct.hub).max()
+    tasselli = direct.H_tasselli().T  # some nearly cancel inside: error against the largest
+    assert np.abs(reduced.H - tasselli).max() < 5e-3 * np.abs(tasselli).max()
+    assert np.abs(reduced.H_tot[0] - direct.H_tot[0]) < 1e-9 * np.abs(direct.H_tot[0])  # static anchor exact
+
+
+def test_the_storage_frozen_model_has_real_loaded_modes(built):
+    """The paper's FET70Hz has no loss: its loaded modes are real, and they are the complex
+    model's modes but for the loss (the frequencies within 1 %)."""
+    tire, static = built
+    storage = section_modal.frozen_modal_model(tire, static, 80.0, storage=True)
+    lossy = stages.modal_reduction(TIRE, reference_frequency=80.0).frozen_eigenvalues
+    assert np.abs(storage.eigenvalues.imag).max() < 1e-9 * np.abs(storage.eigenvalues.real).max()
+    low = storage.freqs < 250.0
+    np.testing.assert_allclose(storage.freqs[low], np.sqrt(lossy.real[low]) / (2 * np.pi), rtol=1e-2)
+
+
+def test_the_papers_procedure_follows_the_viscoelastic_tire(built):
+    """Identified damping + complex frozen moduli + quasi-static anchors against the direct FRFs:
+    exact at 0 Hz (to the Ritz bases), within 5 % below 100 Hz; the reference is the mode that carries H_tot(0)."""
+    visco = stages.frf_visco(TIRE)
+    reduced = stages.modal_reduction(TIRE)
+    assert abs(reduced.reference_frequency - visco.freqs[np.argmax(np.abs(visco.H_tot[:251]))]) < 2.0
+    np.testing.assert_allclose(reduced.frf.H[:, 0], visco.H[:, 0], rtol=1e-4)  # two Ritz bases: 2e-5 apart
+    errors = band_errors(visco.freqs, visco.H_tot, reduced.frf.H_tot)["complex rel. RMS"]
+    assert errors.iloc[0] < 0.05
+    table = reduced.mode_table()
+    assert (table["damping from"] == "identified").sum() == reduced.identification.freqs.size
+    assert table["frequency (Hz)"].max() > 500.0  # loaded modes to at least 2 f_band
+
+
+def test_section_modal_reduction_refuses_bad_options(built):
+    tire, static = built
+    visco = stages.frf_visco(TIRE)
+    with pytest.raises(ValueError, match="frozen = 'liquid'"):
+        section_modal.section_modal_reduction(tire, static, visco, frozen="liquid")
+    with pytest.raises(ValueError, match="storage model has no loss"):
+        section_modal.section_modal_reduction(tire, static, visco, frozen="storage", damping="model")
+    with pytest.raises(ValueError, match="f_band"):
+        section_modal.section_modal_reduction(tire, static, visco, f_band=0.0)
+    with pytest.raises(ValueError, match="anchors must start at 0"):
+        section_modal.section_modal_reduction(tire, static, visco, anchors=(0.1, 1.0))
+    with pytest.raises(TypeError, match="FRFResult"):
+        section_modal.section_modal_reduction(tire, static, "visco")
