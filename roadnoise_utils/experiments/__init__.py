@@ -9,13 +9,26 @@ experiment                     what it runs                                     
 :func:`road_test`              textures flowing through the footprint           06
 :func:`quarter_car`            the corner on the road test, spectra             07
 :func:`calibration_table`      the tire against its calibration targets         01
+:func:`band_extension`         the chain at 0-250 and 0-400 Hz, cleat and road  10
 =============================  ===============================================  ==========
 
 ``*_conditions`` functions resolve a test's defaults (an argument left at ``None`` is the
 paper's value); the numerics below them take explicit arguments and read no TOML.
 """
 
-from . import calibration, cleat, conditions, corner, cross_section, moving_hub, one_sided_cleat, paper_defaults, road
+from . import (
+    bands,
+    calibration,
+    cleat,
+    conditions,
+    corner,
+    cross_section,
+    moving_hub,
+    one_sided_cleat,
+    paper_defaults,
+    road,
+)
+from .bands import BandExtension, BandModel, band_extension
 from .calibration import calibration_table
 from .cleat import CleatConditions, CleatRun, CleatTest, cleat_conditions, cleat_test
 from .corner import CornerSetup, QuarterCarTest, corner_setup, quarter_car
@@ -32,6 +45,10 @@ from .one_sided_cleat import (
 from .road import RoadTest, RoadTestConditions, road_test, road_test_conditions
 
 __all__ = [
+    "BandExtension",
+    "BandModel",
+    "band_extension",
+    "bands",
     "cross_section",
     "CleatConditions",
     "CleatRun",

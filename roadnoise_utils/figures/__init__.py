@@ -6,6 +6,7 @@ at this edge only) and draws the paper's own numbers as labelled reference lines
 """
 
 from . import (
+    band_extension,
     cleat_test,
     common,
     contact_loss,
@@ -20,6 +21,7 @@ from . import (
 )
 
 __all__ = [
+    "band_extension",
     "cleat_test",
     "common",
     "contact_loss",

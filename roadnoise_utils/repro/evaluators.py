@@ -14,7 +14,8 @@ from collections.abc import Callable
 
 import numpy as np
 
-from ..analysis import band_errors, distinct_peaks, peak_comparison, resonance_peaks
+from ..analysis import band_errors, distinct_peaks, peak_comparison, relative_rms_error, resonance_peaks
+from ..experiments.bands import cleat_chain
 from ..experiments.cleat import CleatTest, cleat_test
 from ..experiments.corner import PAPER_CAR, QuarterCarTest, quarter_car
 from ..experiments.moving_hub import moving_hub_check
@@ -188,6 +189,7 @@ EVALUATORS: dict[str, Callable[[str], float]] = {
     "moving_hub": _moving_hub,
     "hub_poles": lambda m: float(stages.fit_hub(tire_of(m, "check")).n_poles),
     "resolution_5cm": _resolution,
+    "extension_400": lambda m: relative_rms_error(*cleat_chain(tire_of(m), 400.0)[2:]),
     "fig10_low": lambda m: _transmissibility_stats()["fig10_low"],
     "fig10_mid": lambda m: _transmissibility_stats()["fig10_mid"],
     "fig10_high": lambda m: _transmissibility_stats()["fig10_high"],

@@ -24,21 +24,31 @@ def order_scan(
     return pd.DataFrame(rows).set_index("poles")
 
 
+def default_orders(f_max: float | None) -> range:
+    """Orders searched for a band 0-``f_max`` Hz: 8 to 24 up to 250 Hz, the top growing with the band
+    beyond (the modes in band grow about in proportion: 8 to 39 at 400 Hz)."""
+    top = 24 if f_max is None or f_max <= 250.0 else int(np.ceil(24 * f_max / 250.0))
+    return range(8, top + 1)
+
+
 def lowest_order(
     freqs: np.ndarray,
     H: np.ndarray,
     tolerance: float = 0.01,
-    orders: range | list[int] = range(8, 25),
+    orders: range | list[int] | None = None,
     f_max: float | None = 250.0,
     strict: bool = True,
     **options,
 ) -> FitSet:
     """The fits at the lowest order whose every fit has relative RMS error below ``tolerance``.
 
+    ``orders`` default :func:`default_orders` of the band.
+
     When no order in ``orders`` gets there: ``strict`` raises ``ValueError``; otherwise the order
     with the smallest worst error is returned with a :class:`~roadnoise_utils.guards.RoadnoiseWarning`
     naming it (the chain then runs, the error stated).
     """
+    orders = default_orders(f_max) if orders is None else orders
     best = None
     for n in orders:
         fits = fit_tasselli(freqs, H, n_poles=n, f_max=f_max, **options)
