@@ -226,6 +226,22 @@ axes[1].set_title(f"drum R = {drum_radius:.2f} m: {drum.tasselli.n} tasselli")
 fig.suptitle("Fig. 2 analogue: subdivision of the footprint into tasselli")
 plt.show()
 
+# %% [markdown]
+# The tire built from its cross-section (notebook 09) has its own footprint: contact points on
+# a grid of 3 mm along by the tread nodes across, one road track per contact column, and rows
+# of at most 15 mm. Side by side on the flat road:
+
+# %%
+# Fig. 2 analogue on both tire models, flat road: this notebook's ring tire and the paper's 165/65 R14 from its cross-section
+section_flat = ru.stages.solve_static("165_65R14_cross_section")
+fig, axes = plt.subplots(1, 2, figsize=(13, 5))
+ru.figures.fe_tire_model.plot_footprint(flat, axes[0], numbers="some")
+axes[0].set_title(f"ring model ({tire_name}): {flat.tasselli.n} tasselli")
+ru.figures.fe_tire_model.plot_footprint(section_flat, axes[1], numbers="some")
+axes[1].set_title(f"cross-section model: {section_flat.tasselli.n} tasselli (paper: {n_paper:.0f})")
+fig.suptitle("Fig. 2 analogue: the footprint of each tire model")
+plt.show()
+
 # %%
 # The first rows of the tassello table (flat road)
 flat.tasselli.table().head(12)

@@ -307,5 +307,7 @@ print(chapter.convergence_table(tire_name).to_string(float_format=lambda v: f"{v
 # | air cavity | not modelled | not modelled (issue 15) |
 #
 # The numbers the paper gives for its FET — the first vertical resonance near 80 Hz and the
-# footprint of 71 tasselli — are in the comparison and calibration tables above; the RM chain on
-# this tire (the paper's Fig. 5, 6, 9 and 14) is the next issue.
+# footprint of 71 tasselli — are in the comparison and calibration tables above. The RM chain
+# runs on this tire stage by stage: its modal reduction and Fig. 5 in notebook 02 (section 8),
+# its fits in notebook 03, the paper's cleat simulation (Fig. 9) in notebook 04, Fig. 14 in
+# notebook 07, and the extension to 400 Hz in notebook 10.

@@ -144,13 +144,19 @@ def loaded_modes(even: EvenFootprint, laws: dict, f_free: float) -> LoadedModes:
     mu, vecs = mu[order], vecs[:, order]
     vecs = vecs / np.sqrt(np.einsum("mj,mj->j", vecs, vecs))  # V^T V = I (unconjugated)
     hub_gain = np.einsum("mj,mj->j", vecs, mu[None, :] * free.momentum[:, None] - (free.shapes.T @ r_inv_one)[:, None])
-    road_gain = vecs.T @ r_inv_psi.T
+    # A residual flexibility not quite positive definite (the sampled quasi-static harmonics) gives
+    # a few spurious modes with Re mu < 0, beyond f_free and with tiny gains: they respond
+    # quasi-statically (the anchors carry them) and their first inertia term, a_j^2 / mu_j^2,
+    # moves with the rim.
+    keep = mu.real > 0
+    dropped_mass = np.sum(hub_gain[~keep] ** 2 / mu[~keep] ** 2)
+    vecs, mu, hub_gain = vecs[:, keep], mu[keep], hub_gain[keep]
     dominant = np.argmax(np.abs(vecs), axis=0)
     return LoadedModes(
         eigenvalues=mu,
         hub_gain=hub_gain,
-        road_gain=road_gain,
-        residual_mass=complex(tire_mass(even.tire.ops) - free.momentum @ free.momentum),
+        road_gain=vecs.T @ r_inv_psi.T,
+        residual_mass=complex(tire_mass(even.tire.ops) - free.momentum @ free.momentum + dropped_mass),
         harmonic=free.harmonic[dominant],
         order=free.order[dominant],
     )
