@@ -9,7 +9,8 @@ Times, as ranges over the repeats (shared machines are noisy), of both tire mode
 165/65 R14: building the model, the loaded static solve on the flat road, and the footprint
 FRFs 0-400 Hz every 1 Hz (cross-section: the footprint receptance and hub transfer of
 :mod:`roadnoise_utils.response.section_footprint`; ring: :func:`roadnoise_utils.response.frf.frf_visco`,
-the direct sweep of the same quantity). Peak memory by ``tracemalloc`` (Python allocations,
+the direct sweep of the same quantity), and the paper's modal reduction (Fig. 4) with the
+modal FRFs it gives in place of the direct sweep. Peak memory by ``tracemalloc`` (Python allocations,
 numpy arrays included) of the last repeat of each step.
 """
 
@@ -23,7 +24,7 @@ import tracemalloc
 import numpy as np
 
 import roadnoise_utils as ru
-from roadnoise_utils.response import frf, section_footprint
+from roadnoise_utils.response import frf, modal_reduction, section_footprint, section_modal
 from roadnoise_utils.tire import section_static, static
 
 
@@ -59,16 +60,27 @@ def main() -> None:
     rows.append(("cross-section", "build (mesh, harmonic matrices, inflation)", t, peak))
     t, state, peak = timed(args.repeats, section_static.solve_section_static, tire)
     rows.append(("cross-section", f"loaded static solve ({state.contact.sum()} points in contact)", t, peak))
-    t, _, peak = timed(args.repeats, section_footprint.footprint_frf, tire, state, freqs)
+    t, direct, peak = timed(args.repeats, section_footprint.footprint_frf, tire, state, freqs)
     rows.append(("cross-section", "footprint receptance + hub transfer, 0-400 Hz at 1 Hz", t, peak))
+    visco = direct.to_frf_result()
+    t, reduced, peak = timed(args.repeats, section_modal.section_modal_reduction, tire, state, visco)
+    n_modes = reduced.model.eigenvalues.size
+    rows.append(("cross-section", f"modal reduction, band 250 Hz ({n_modes} loaded modes, synthesis)", t, peak))
+    t, _, peak = timed(args.repeats, reduced.model.frf, freqs)
+    rows.append(("cross-section", "modal FRFs (H_i, H_tot, G_H), 0-400 Hz at 1 Hz", t, peak))
 
     ring = ru.load_tire(args.ring)
     t, fet, peak = timed(args.repeats, ru.build_fet, ring)
     rows.append(("ring", "build (8103 DOF)", t, peak))
     t, ring_state, peak = timed(args.repeats, static.solve_static, fet)
     rows.append(("ring", f"loaded static solve ({ring_state.contact.sum()} points in contact)", t, peak))
-    t, _, peak = timed(args.repeats, frf.frf_visco, fet, ring_state, freqs, progress=False)
+    t, ring_visco, peak = timed(args.repeats, frf.frf_visco, fet, ring_state, freqs, progress=False)
     rows.append(("ring", "direct FRF sweep (H_i, H_tot), 0-400 Hz at 1 Hz", t, peak))
+    t, ring_reduced, peak = timed(args.repeats, modal_reduction.modal_reduction, fet, ring_state, visco=ring_visco)
+    n_modes = ring_reduced.model.eigenvalues.size
+    rows.append(("ring", f"modal reduction, band 250 Hz ({n_modes} loaded modes, symmetric subspace)", t, peak))
+    t, _, peak = timed(args.repeats, ring_reduced.model.frf, freqs)
+    rows.append(("ring", "modal FRFs (H_i, H_tot, G_H), 0-400 Hz at 1 Hz", t, peak))
 
     print(f"{'model':14s} {'step':62s} {'time (s)':>14s} {'peak (MB)':>10s}")
     for model, step, t, peak in rows:

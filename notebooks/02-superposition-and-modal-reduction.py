@@ -363,12 +363,9 @@ section_variants = {
     "frozen complex + identified damping (default)": ru.stages.modal_reduction(section_name),
 }
 section_reduced = section_variants["frozen complex + identified damping (default)"]
-section_tire = ru.section_stages.section_tire(section_name)
-section_flat = ru.section_stages.section_static(section_name)
 check_freqs = np.arange(0.0, 251.0, 10.0)
 f_ref = section_reduced.reference_frequency
-synthesis = ru.response.section_modal.frozen_modal_model(section_tire, section_flat, f_ref).frf(check_freqs)
-frozen_direct = ru.response.section_modal.frozen_reference(section_tire, section_flat, check_freqs, f_ref)
+synthesis, frozen_direct = ru.section_stages.frozen_check(section_name, f_ref, check_freqs)
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -397,16 +394,17 @@ print(section_modes.head(12).to_string(float_format=lambda v: f"{v:.4g}"))
 print(f"... {len(section_modes)} loaded modes up to {section_reduced.model.freqs.max():.0f} Hz")
 
 # %% [markdown]
-# $H_{tot}$ of this tire shows one mode: its higher vertical modes (the loaded modes with a
-# static share, harmonics 2-6 in the table) cancel in the sum over the footprint, while every
-# tassello sees them (notebook 03). The loaded modes without static share are those the
+# $H_{tot}$ of this tire has one strong resonance, the only one above twice its static value
+# (the identification's threshold): its higher vertical modes (the loaded modes with a static
+# share, harmonics 2-6 in the table) nearly cancel in the sum over the footprint and leave
+# ripples, while every tassello sees them (notebook 03). The loaded modes without static share are those the
 # symmetric road cannot drive (their hub and road gains cancel).
 #
 # Fig. 5 on both tire models:
 
 # %%
 # Fig. 5 analogue on both tire models: |H_tot| (direct) vs |sum_i H_i| of the modal models
-fig, axes = plt.subplots(1, 2, figsize=(14, 4.5), sharey=True)
+fig, axes = plt.subplots(1, 2, figsize=(14, 4.5))
 ru.figures.superposition.plot_superposition(
     visco, modal_frfs, f_max=300, ax=axes[0], paper={"paper: freezing frequency": f_frozen}
 )

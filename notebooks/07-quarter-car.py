@@ -284,12 +284,14 @@ print("vertical modes in H_tot, ring tire: " + ", ".join(f"{fm:.0f}" for fm in i
 print("vertical modes in H_tot, cross-section tire: " + ", ".join(f"{fm:.0f}" for fm in section_modes.freqs) + " Hz")
 
 # %% [markdown]
-# The cross-section tire's $H_{tot}$ carries a single mode — its higher vertical modes cancel
-# when the whole footprint moves together (notebook 02, section 8) — yet the hub shows a row of
-# peaks above it (printed above). The rolling road does not move the footprint together: each
-# row of tasselli sees the road later than the one before, and those phase differences drive
-# the modes the uniform push cancels. The tasselli's own FRFs (notebook 03) carry them, so the
-# RM chain does too. The claim `fig14_modes` counts the peaks on each model.
+# The cross-section tire's $H_{tot}$ has one strong resonance — its higher vertical modes
+# nearly cancel when the whole footprint moves together and show there as ripples (notebook
+# 02, section 8) — yet the hub shows a row of peaks above it (printed above). The rolling road
+# does not move the footprint together: each row of tasselli sees the road later than the one
+# before, and those phase differences drive the modes the uniform push cancels. The tasselli's
+# own FRFs carry them (notebook 03), so the RM chain does too. They are broad: this tire's
+# rubber damps its modes several times more than the ring's (notebook 09). The claim
+# `fig14_modes` counts the peaks on each model.
 
 # %% [markdown]
 # ## 6. Speed

@@ -283,6 +283,17 @@ def cache_enabled() -> bool:
     return os.environ.get("ROADNOISE_CACHE", "on").lower() not in ("off", "0", "false", "no")
 
 
+def _timed(name: str, compute: Callable[[], T]) -> T:
+    """``compute()``; with ``ROADNOISE_STAGE_LOG`` set, its wall time appended to that file (one line per stage run)."""
+    log = os.environ.get("ROADNOISE_STAGE_LOG")
+    start = time.perf_counter()
+    value = compute()
+    if log:
+        with open(log, "a") as out:
+            out.write(f"{name}\t{time.perf_counter() - start:.2f}\t{os.getpid()}\n")
+    return value
+
+
 def cached(
     stage: Callable | str,
     inputs: dict[str, Any],
@@ -307,7 +318,7 @@ def cached(
     name = stage if isinstance(stage, str) else stage.__name__
     if not cache_enabled():
         STATS[name, "computed"] += 1
-        return compute()
+        return _timed(name, compute)
     key = cache_key(name, inputs, stage_fingerprint(stage, runs))
     folder = _usable_folder()
     if folder is not None:
@@ -322,7 +333,7 @@ def cached(
                 STATS[name, "hit"] += 1
                 return value
             _remove_orphans(path, locked)
-            value = compute()
+            value = _timed(name, compute)
             STATS[name, "computed"] += 1
             try:
                 _write(path, value)

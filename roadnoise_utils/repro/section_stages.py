@@ -8,6 +8,7 @@ stage                       caches
                             (default 0-400 Hz every 1 Hz)
 :func:`section_modal`       :func:`roadnoise_utils.response.section_modal.section_modal_reduction`
                             on the default sweep
+:func:`frozen_check`        :func:`roadnoise_utils.response.section_modal.frozen_check`
 ==========================  ==============================================================
 
 :func:`section_tire` (mesh, harmonic matrices and inflation: about half a second) is not cached.
@@ -22,6 +23,7 @@ import numpy as np
 
 from ..response import section_footprint as footprint
 from ..response import section_modal as modal
+from ..response.frf import FRFResult
 from ..response.modal_reduction import ModalReduction
 from ..response.section_footprint import FootprintFRF
 from ..tire import section_static as static_module
@@ -128,4 +130,21 @@ def section_modal(
         {**inputs, **options},
         compute,
         runs=(modal.section_modal_reduction, footprint.footprint_frf, static_module.solve_section_static),
+    )
+
+
+def frozen_check(
+    tire: SectionTireLike, reference_frequency: float, freqs: np.ndarray, road: str = "flat"
+) -> tuple[FRFResult, FootprintFRF]:
+    """Cached :func:`.response.section_modal.frozen_check` (the synthesis and the direct frozen solve)."""
+    inputs = _inputs(tire, road, None, None)
+    options = {"reference_frequency": float(reference_frequency), "freqs": np.asarray(freqs, float)}
+    state = section_static(tire, road)
+
+    def compute() -> tuple[FRFResult, FootprintFRF]:
+        built = build_section_tire(inputs["tire"])
+        return modal.frozen_check(built, state, options["freqs"], options["reference_frequency"])
+
+    return cached(
+        frozen_check, {**inputs, **options}, compute, runs=(modal.frozen_check, static_module.solve_section_static)
     )

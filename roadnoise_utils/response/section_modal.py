@@ -30,7 +30,7 @@ synthesis (MacNeal 1971; Craig & Kurdila, *Fundamentals of Structural Dynamics*,
 
 The result is the ring model's :class:`.modal_reduction.ModalModel` (mode-acceleration form,
 quasi-static anchors with the moduli at each frequency), so both tire models give the same
-:class:`.modal_reduction.ModalReduction`. :func:`frozen_reference` solves the frozen model
+:class:`.modal_reduction.ModalReduction`. :func:`frozen_check` also solves the frozen model
 directly (the footprint solve with frozen laws): the check of steps 1-4.
 """
 
@@ -260,18 +260,22 @@ def section_modal_reduction(
     )
 
 
-def frozen_modal_model(
+def frozen_check(
     tire: SectionTire,
     static: SectionStaticState,
+    freqs: np.ndarray,
     reference_frequency: float,
     storage: bool = False,
     f_band: float = 250.0,
-) -> ModalModel:
-    """The frozen model by the synthesis, every loss its own (no identification, frozen static anchor).
+) -> tuple[FRFResult, FootprintFRF]:
+    """The frozen model two ways at ``freqs`` (Hz): by the synthesis and solved directly.
 
-    With :func:`frozen_reference` the two solutions of one model: they differ only by the
-    inertia of what the residual flexibility stands for.
+    Every law frozen at ``reference_frequency`` (Hz), every loss the model's own (no
+    identification), one static anchor: ``(synthesis, direct)``. Both use the same reduced
+    harmonics (those of :func:`section_modal_reduction` with this ``f_band``), so they differ
+    only by the inertia of what the residual flexibility stands for: the check of the synthesis.
     """
+    freqs = np.asarray(freqs, float)
     _check_options("storage" if storage else "complex", "identified", f_band)
     f_free = FREE_FACTOR * 2 * f_band
     even = EvenFootprint.build(tire, static, 1.6 * f_band, f_free)
@@ -280,25 +284,5 @@ def frozen_modal_model(
     anchor = even.footprint(np.zeros(1), laws=laws, inertia=False)
     source = np.full(modes.eigenvalues.size, "frozen model", dtype=object)
     frozen = "storage" if storage else "complex"
-    return _model_of(modes, even, anchor, modes.eigenvalues, source, reference_frequency, frozen)
-
-
-def frozen_reference(
-    tire: SectionTire,
-    static: SectionStaticState,
-    freqs: np.ndarray,
-    reference_frequency: float,
-    storage: bool = False,
-    f_band: float = 250.0,
-) -> FootprintFRF:
-    """The frozen model solved directly: the footprint FRF with every law frozen at ``reference_frequency`` (Hz).
-
-    Its harmonics are reduced like those of :func:`section_modal_reduction` with the same
-    ``f_band`` (default anchors), so the two differ only by the residual flexibility's missing
-    inertia: the check of the synthesis.
-    """
-    freqs = np.asarray(freqs, float)
-    _check_options("storage" if storage else "complex", "identified", f_band)
-    even = EvenFootprint.build(tire, static, 1.6 * f_band, FREE_FACTOR * 2 * f_band)
-    laws = frozen_laws(tire.ops.laws, 2 * np.pi * float(reference_frequency), storage_only=storage)
-    return even.footprint(freqs, laws=laws)
+    model = _model_of(modes, even, anchor, modes.eigenvalues, source, reference_frequency, frozen)
+    return model.frf(freqs), even.footprint(freqs, laws=laws)
