@@ -365,7 +365,8 @@ section_variants = {
 section_reduced = section_variants["frozen complex + identified damping (default)"]
 check_freqs = np.arange(0.0, 251.0, 10.0)
 f_ref = section_reduced.reference_frequency
-synthesis, frozen_direct = ru.section_stages.frozen_check(section_name, f_ref, check_freqs)
+check = ru.section_stages.frozen_check(section_name, f_ref, check_freqs)
+synthesis, frozen_direct = check.synthesis, check.direct
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -390,7 +391,9 @@ section_ident = section_reduced.identification
 print(section_ident.table(total_static=section_visco.H_tot[0]).to_string(float_format=lambda v: f"{v:.4f}"))
 print(f"most relevant vertical mode: {section_reduced.reference_frequency:.1f} Hz")
 section_modes = section_reduced.mode_table()
-print(section_modes.head(12).to_string(float_format=lambda v: f"{v:.4g}"))
+share = section_modes["static share (N/mm)"]
+shown_modes = section_modes.assign(**{"static share (N/mm)": share.where(share.abs() > 1e-9, 0.0)})  # round-off -> 0
+print(shown_modes.head(12).to_string(float_format=lambda v: f"{v:.4g}"))
 print(f"... {len(section_modes)} loaded modes up to {section_reduced.model.freqs.max():.0f} Hz")
 
 # %% [markdown]

@@ -258,7 +258,8 @@ assert len(peaks) >= 4
 # The corner on the cross-section tire (cached stages; its shoulder tasselli warn that no fit order reaches 1 %)
 section_setup = ru.experiments.corner_setup(car, tire="195_65R15_cross_section")
 section_predicted = section_setup.predicted(f_check, road_test.spectra()[shown], road_test.speed)
-section_modes = ru.stages.modal_reduction(section_setup.tire).identification
+section_visco = ru.stages.frf_visco(section_setup.tire)
+section_modes = ru.response.modal_reduction.identify_modes(section_visco.freqs, section_visco.H_tot)
 
 # %%
 # Fig. 14 analogue on both tire models: hub acceleration 40-220 Hz (frequency domain, 2D rough road)

@@ -2,9 +2,13 @@
 
 ``python -m roadnoise_utils`` (the README's first command):
 
-1. runs each ready notebook of ``data/collection.toml`` in a fresh kernel, in order, with the
-   inline plotting backend whatever ``MPLBACKEND`` says (a per-cell time limit, one retry of
-   a stalled notebook); a failing notebook stops the run and names its cell;
+1. runs each ready notebook of ``data/collection.toml`` in a fresh kernel, with the inline
+   plotting backend whatever ``MPLBACKEND`` says (a per-cell time limit, one retry of a
+   stalled notebook), two at a time on two cores (``--workers``; the stage cache's per-key
+   locks make a notebook wait for a stage another one is computing, never compute it twice),
+   started in order but for notebook 00, which evaluates every claim and starts last, when
+   the chapters have computed their stages; BLAS runs one thread per kernel then (two pools on
+   two cores slowed a notebook up to 8x); a failing notebook stops the run and names its cell;
 2. checks that every plot cell (a top-level ``plt.show()``) produced its figure;
 3. evaluates every claim of ``data/paper/claims.toml`` (:mod:`.claims`);
 4. only then writes, all at once: the figures (``figures/`` or ``--figures``, PNG, named after
@@ -25,11 +29,13 @@ import argparse
 import base64
 import contextlib
 import csv
+import multiprocessing
 import os
 import re
 import shutil
 import tempfile
 import time
+from concurrent.futures import ProcessPoolExecutor, as_completed
 from pathlib import Path
 
 import nbformat
@@ -47,6 +53,8 @@ _ANALOGUE = re.compile(r"^Fig\.\s*\d+\s*analogue:?\s*")
 INLINE_BACKEND = "module://matplotlib_inline.backend_inline"
 #: Default time limit of one cell (s); the longest cell computes every claim on a cold cache (~30 s).
 CELL_TIMEOUT = 300
+#: Notebooks executed at a time: two (the machines this runs on have two cores), fewer on one core.
+WORKERS = min(2, os.cpu_count() or 1)
 #: Files of the figures folder that the reproduction writes (anything else in it is kept).
 _OWN = re.compile(r".*\.png|index\.csv|reproduction-report\.(csv|md)")
 
@@ -203,19 +211,46 @@ def _write_notebook(nb: nbformat.NotebookNode, path: Path) -> None:
             os.unlink(tmp)
 
 
+#: BLAS thread variables set to 1 in the kernels when notebooks run side by side (two BLAS pools
+#: on two cores slow each other down several times).
+_ONE_THREAD = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
+
+
+def _timed_execution(path: Path, timeout: int, one_thread: bool) -> tuple[nbformat.NotebookNode, float]:
+    if one_thread:
+        os.environ.update(dict.fromkeys(_ONE_THREAD, "1"))  # this worker process only; its kernels inherit it
+    start = time.perf_counter()
+    nb = execute_notebook(path, timeout)
+    return nb, time.perf_counter() - start
+
+
+def _execute_all(paths: list[Path], timeout: int, workers: int) -> dict[Path, nbformat.NotebookNode]:
+    """Every notebook executed, ``workers`` at a time (started in order); the first failure stops the run."""
+    done = {}
+    # the overview (first) evaluates every claim: started last, it finds the chapters' stages computed
+    started = paths[1:] + paths[:1]
+    with ProcessPoolExecutor(max_workers=workers, mp_context=multiprocessing.get_context("spawn")) as pool:
+        futures = {pool.submit(_timed_execution, path, timeout, workers > 1): path for path in started}
+        try:
+            for future in tqdm(as_completed(futures), total=len(futures), desc="notebooks"):
+                nb, seconds = future.result()
+                done[futures[future]] = nb
+                tqdm.write(f"{futures[future].name}: {seconds:.1f} s")
+        except BaseException:
+            pool.shutdown(wait=True, cancel_futures=True)
+            raise
+    return {path: done[path] for path in paths}
+
+
 def reproduce(
-    paths: list[Path], out: Path, timeout: int = CELL_TIMEOUT, report: bool = True
+    paths: list[Path], out: Path, timeout: int = CELL_TIMEOUT, report: bool = True, workers: int = 2
 ) -> tuple[list[dict[str, str]], object]:
-    """Execute ``paths`` in order, then write figures, index and (with ``report``) the claims report.
+    """Execute ``paths`` (``workers`` at a time), then write figures, index and (with ``report``) the report.
 
     Returns the figure index rows and the report table (or ``None``). Raises
     :class:`ReproductionError` before writing anything if a notebook fails or a figure is missing.
     """
-    executed = {}
-    for path in tqdm(paths, desc="notebooks"):
-        start = time.perf_counter()
-        executed[path] = execute_notebook(path, timeout)
-        tqdm.write(f"{path.name}: {time.perf_counter() - start:.1f} s")
+    executed = _execute_all(paths, timeout, workers)
     if executed and not any(figure_names(nb, p.stem) for p, nb in executed.items()):
         raise ReproductionError("the notebooks produced no figure at all")
     table = None
@@ -260,6 +295,9 @@ def main(argv: list[str] | None = None) -> int:
         "--timeout", type=int, default=CELL_TIMEOUT, help=f"per-cell limit in s (default {CELL_TIMEOUT})"
     )
     parser.add_argument(
+        "--workers", type=int, default=WORKERS, help=f"notebooks run at a time (default {WORKERS}, at most the cores)"
+    )
+    parser.add_argument(
         "--print",
         choices=["notebook-table", "gallery"],
         help="only print the README's generated notebook table or figure gallery",
@@ -270,6 +308,8 @@ def main(argv: list[str] | None = None) -> int:
         return 0
     if args.timeout <= 0:
         parser.error(f"--timeout = {args.timeout} s: valid range is > 0 s")
+    if args.workers < 1:
+        parser.error(f"--workers = {args.workers}: valid range is >= 1")
     out = args.figures or figure_dir()
     if args.report_only:
         print("evaluating the paper's claims ...")
@@ -281,7 +321,7 @@ def main(argv: list[str] | None = None) -> int:
     if missing:
         parser.error(f"--notebooks {args.notebooks}: missing {', '.join(missing)}")
     try:
-        rows, table = reproduce(paths, out, args.timeout)
+        rows, table = reproduce(paths, out, args.timeout, workers=args.workers)
     except ReproductionError as exc:
         print(f"reproduction failed, nothing written: {exc}")
         return 2

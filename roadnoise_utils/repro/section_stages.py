@@ -23,7 +23,6 @@ import numpy as np
 
 from ..response import section_footprint as footprint
 from ..response import section_modal as modal
-from ..response.frf import FRFResult
 from ..response.modal_reduction import ModalReduction
 from ..response.section_footprint import FootprintFRF
 from ..tire import section_static as static_module
@@ -135,13 +134,13 @@ def section_modal(
 
 def frozen_check(
     tire: SectionTireLike, reference_frequency: float, freqs: np.ndarray, road: str = "flat"
-) -> tuple[FRFResult, FootprintFRF]:
+) -> modal.FrozenCheck:
     """Cached :func:`.response.section_modal.frozen_check` (the synthesis and the direct frozen solve)."""
     inputs = _inputs(tire, road, None, None)
     options = {"reference_frequency": float(reference_frequency), "freqs": np.asarray(freqs, float)}
     state = section_static(tire, road)
 
-    def compute() -> tuple[FRFResult, FootprintFRF]:
+    def compute() -> modal.FrozenCheck:
         built = build_section_tire(inputs["tire"])
         return modal.frozen_check(built, state, options["freqs"], options["reference_frequency"])
 

@@ -260,6 +260,25 @@ def section_modal_reduction(
     )
 
 
+@dataclass(frozen=True, eq=False)
+class FrozenCheck:
+    """The frozen model two ways: by the synthesis and solved directly (:func:`frozen_check`).
+
+    Attributes
+    ----------
+    synthesis : FRFResult
+        The loaded-mode synthesis (one frozen static anchor, every loss the model's own).
+    direct : FootprintFRF
+        The footprint solve with every compound law frozen.
+    eigenvalues : ndarray, complex
+        The loaded modes of the synthesis (rad^2/s^2).
+    """
+
+    synthesis: FRFResult
+    direct: FootprintFRF
+    eigenvalues: np.ndarray
+
+
 def frozen_check(
     tire: SectionTire,
     static: SectionStaticState,
@@ -267,13 +286,13 @@ def frozen_check(
     reference_frequency: float,
     storage: bool = False,
     f_band: float = 250.0,
-) -> tuple[FRFResult, FootprintFRF]:
+) -> FrozenCheck:
     """The frozen model two ways at ``freqs`` (Hz): by the synthesis and solved directly.
 
     Every law frozen at ``reference_frequency`` (Hz), every loss the model's own (no
-    identification), one static anchor: ``(synthesis, direct)``. Both use the same reduced
-    harmonics (those of :func:`section_modal_reduction` with this ``f_band``), so they differ
-    only by the inertia of what the residual flexibility stands for: the check of the synthesis.
+    identification), one static anchor. Both use the same reduced harmonics (those of
+    :func:`section_modal_reduction` with this ``f_band``), so they differ only by the inertia of
+    what the residual flexibility stands for: the check of the synthesis.
     """
     freqs = np.asarray(freqs, float)
     _check_options("storage" if storage else "complex", "identified", f_band)
@@ -285,4 +304,4 @@ def frozen_check(
     source = np.full(modes.eigenvalues.size, "frozen model", dtype=object)
     frozen = "storage" if storage else "complex"
     model = _model_of(modes, even, anchor, modes.eigenvalues, source, reference_frequency, frozen)
-    return model.frf(freqs), even.footprint(freqs, laws=laws)
+    return FrozenCheck(model.frf(freqs), even.footprint(freqs, laws=laws), modes.eigenvalues)
