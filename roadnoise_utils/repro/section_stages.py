@@ -9,6 +9,8 @@ stage                       caches
 :func:`section_modal`       :func:`roadnoise_utils.response.section_modal.section_modal_reduction`
                             on the default sweep
 :func:`frozen_check`        :func:`roadnoise_utils.response.section_modal.frozen_check`
+:func:`quasi_static_cleat`  :func:`roadnoise_utils.response.section_one_sided.section_quasi_static_run`
+                            of a cleat on the drum
 ==========================  ==============================================================
 
 :func:`section_tire` (mesh, harmonic matrices and inflation: about half a second) is not cached.
@@ -23,8 +25,11 @@ import numpy as np
 
 from ..response import section_footprint as footprint
 from ..response import section_modal as modal
+from ..response import section_one_sided as one_sided
 from ..response.modal_reduction import ModalReduction
+from ..response.one_sided import ContactRun
 from ..response.section_footprint import FootprintFRF
+from ..road.cleat import cleat_profile
 from ..tire import section_static as static_module
 from ..tire import spec
 from ..tire.cross_section import CrossSectionSpec
@@ -147,3 +152,32 @@ def frozen_check(
     return cached(
         frozen_check, {**inputs, **options}, compute, runs=(modal.frozen_check, static_module.solve_section_static)
     )
+
+
+def quasi_static_cleat(
+    tire: SectionTireLike,
+    height: float,
+    base: float,
+    shape: str,
+    drum_radius: float,
+    distance: tuple[float, float],
+    step: float = 1.0e-3,
+) -> ContactRun:
+    """Cached quasi-static cleat passage with one-sided contact on the drum (cleat and travel in m)."""
+    inputs = _inputs(tire, "drum", None, drum_radius)
+    options = {
+        "height": float(height),
+        "base": float(base),
+        "shape": shape,
+        "distance": tuple(float(d) for d in distance),
+        "step": float(step),
+    }
+    state = section_static(tire, "drum", drum_radius=drum_radius)
+
+    def compute() -> ContactRun:
+        built = build_section_tire(inputs["tire"])
+        profile = cleat_profile(height, base, shape)
+        return one_sided.section_quasi_static_run(built, state, profile, options["distance"], step)
+
+    runs = (one_sided.section_quasi_static_run, static_module.solve_section_static)
+    return cached(quasi_static_cleat, {**inputs, **options}, compute, runs=runs)

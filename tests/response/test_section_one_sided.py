@@ -1,0 +1,59 @@
+"""Quasi-static cleat passage with one-sided contact on the cross-section tire."""
+
+import numpy as np
+import pytest
+
+import roadnoise_utils as ru
+from roadnoise_utils.analysis import distinct_peaks
+from roadnoise_utils.repro import section_stages
+from roadnoise_utils.response.section_one_sided import section_quasi_static_run
+from roadnoise_utils.road.cleat import cleat_profile
+
+TIRE = "165_65R14_cross_section"
+
+
+@pytest.fixture(scope="module")
+def run():
+    test = ru.experiments.one_sided_conditions()
+    c = test.cleat
+    return section_stages.quasi_static_cleat(TIRE, c.height, c.base, c.shape, c.drum_radius, test.sweep_distance)
+
+
+def test_the_held_deflection_carries_the_static_load_off_the_cleat(run):
+    """The deflection-held solve against the load-held static solve: off the cleat the hub force is
+    the load; no grid point out of contact penetrates the drum at any step."""
+    assert run.force_balance < 1e-9
+    assert run.max_penetration < 1e-12
+    assert abs(run.hub_force[0]) < 1e-6 * 4512.0
+
+
+@pytest.mark.filterwarnings("ignore:decay components above the 250 Hz band")  # the fits are not held above it
+def test_contact_loss_raises_the_base_curve_above_the_tied_footprint(run):
+    """Two peaks as the cleat crosses; contact loss hands the lifted tread's load to the cleat, so
+    the peak is well above the linear (tied-footprint) chain's quasi-static peak."""
+    linear = ru.experiments.cleat_test(TIRE).quasi_static.peak_force
+    assert distinct_peaks(run.distance, run.hub_force, (-np.inf, np.inf)) == 2
+    assert run.peak_force > 1.5 * linear
+    assert run.contact_points.min() < run.contact_points.max()
+
+
+def test_a_flat_profile_changes_nothing():
+    """A zero profile: every step is the static state (superposition of nothing)."""
+    tire = section_stages.section_tire(TIRE)
+    drum = section_stages.section_static(TIRE, "drum", drum_radius=1.25)
+    flat = section_quasi_static_run(tire, drum, lambda s: np.zeros_like(s), (-0.01, 0.01), 0.005)
+    assert np.abs(flat.hub_force).max() < 1e-6 * drum.load
+    assert np.all(flat.contact_points == drum.contact.sum())
+
+
+def test_bad_input_is_refused():
+    tire = section_stages.section_tire(TIRE)
+    drum = section_stages.section_static(TIRE, "drum", drum_radius=1.25)
+    profile = cleat_profile(0.015, 0.015, "triangle")
+    with pytest.raises(ValueError, match="step"):
+        section_quasi_static_run(tire, drum, profile, (-0.01, 0.01), 0.0)
+    with pytest.raises(ValueError, match="distance"):
+        section_quasi_static_run(tire, drum, profile, (0.01, -0.01))
+    other = section_stages.section_tire("195_65R15_cross_section")
+    with pytest.raises(ValueError, match="another tire"):
+        section_quasi_static_run(other, drum, profile, (-0.01, 0.01))
