@@ -4,9 +4,22 @@
 ``frf`` solves the direct FRFs :math:`H_{tot}, H_i, G_H` (paper Eq. (i)) -> ``modes`` (the
 frozen FET70Hz eigenproblem) -> ``modal_reduction`` (damping identification, modal local FRFs,
 paper Fig. 4-5). ``fe_reference`` holds the FE solves every RM-chain result is checked against.
+The cross-section tire has its own: ``section_footprint`` (direct FRFs), ``section_modal`` (its
+modal reduction, loaded modes by component-mode synthesis) and ``section_one_sided`` (the
+quasi-static cleat passage with contact loss); ``one_sided`` is the ring's contact loss.
 """
 
-from . import fe_reference, frf, loaded, modal_reduction, modes
+from . import (
+    fe_reference,
+    frf,
+    loaded,
+    modal_reduction,
+    modes,
+    one_sided,
+    section_footprint,
+    section_modal,
+    section_one_sided,
+)
 from .fe_reference import fe_cleat_response, fe_moving_hub, fe_road_response
 from .frf import FRFResult, frf_visco
 from .loaded import LoadedTire, loaded_tire
@@ -30,4 +43,8 @@ __all__ = [
     "loaded_tire",
     "modal_reduction",
     "modes",
+    "one_sided",
+    "section_footprint",
+    "section_modal",
+    "section_one_sided",
 ]

@@ -103,7 +103,7 @@ def free_modes(even: EvenFootprint, laws: dict, f_free: float) -> FreeModes:
 
 
 @dataclass(frozen=True, eq=False)
-class LoadedModes:
+class SectionLoadedModes:
     """Loaded modes (rim fixed, contact points held) of the frozen model and their gains.
 
     Attributes
@@ -128,7 +128,7 @@ class LoadedModes:
     order: np.ndarray
 
 
-def loaded_modes(even: EvenFootprint, laws: dict, f_free: float) -> LoadedModes:
+def section_loaded_modes(even: EvenFootprint, laws: dict, f_free: float) -> SectionLoadedModes:
     """Steps 1-4 of the module notes for the frozen ``laws``, free modes below ``f_free`` (Hz)."""
     free = free_modes(even, laws, f_free)
     weight = even.pair_weight
@@ -152,7 +152,7 @@ def loaded_modes(even: EvenFootprint, laws: dict, f_free: float) -> LoadedModes:
     dropped_mass = np.sum(hub_gain[~keep] ** 2 / mu[~keep] ** 2)
     vecs, mu, hub_gain = vecs[:, keep], mu[keep], hub_gain[keep]
     dominant = np.argmax(np.abs(vecs), axis=0)
-    return LoadedModes(
+    return SectionLoadedModes(
         eigenvalues=mu,
         hub_gain=hub_gain,
         road_gain=vecs.T @ r_inv_psi.T,
@@ -175,7 +175,13 @@ def _check_options(frozen: str, damping: str, f_band: float) -> None:
 
 
 def _model_of(
-    modes: LoadedModes, even: EvenFootprint, anchors: FootprintFRF, eigenvalues: np.ndarray, source, f_ref, frozen
+    modes: SectionLoadedModes,
+    even: EvenFootprint,
+    anchors: FootprintFRF,
+    eigenvalues: np.ndarray,
+    source,
+    f_ref,
+    frozen,
 ) -> ModalModel:
     """The ring model's ModalModel from the loaded modes (gains per contact point, anchors)."""
     weight = even.pair_weight[even.representative]
@@ -241,7 +247,7 @@ def section_modal_reduction(
     f_free = FREE_FACTOR * 2 * f_band
     even = EvenFootprint.build(tire, static, float(anchor_freqs[-1]), f_free)
     laws = frozen_laws(tire.ops.laws, 2 * np.pi * reference_frequency, storage_only=frozen == "storage")
-    modes = loaded_modes(even, laws, f_free)
+    modes = section_loaded_modes(even, laws, f_free)
     if damping == "identified":
         eigenvalues, source = apply_identified_damping(modes.eigenvalues, modes.hub_gain, ident, frozen, f_band)
     else:
@@ -299,7 +305,7 @@ def frozen_check(
     f_free = FREE_FACTOR * 2 * f_band
     even = EvenFootprint.build(tire, static, 1.6 * f_band, f_free)
     laws = frozen_laws(tire.ops.laws, 2 * np.pi * float(reference_frequency), storage_only=storage)
-    modes = loaded_modes(even, laws, f_free)
+    modes = section_loaded_modes(even, laws, f_free)
     anchor = even.footprint(np.zeros(1), laws=laws, inertia=False)
     source = np.full(modes.eigenvalues.size, "frozen model", dtype=object)
     frozen = "storage" if storage else "complex"
