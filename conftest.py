@@ -2,8 +2,8 @@
 
 The suite runs on ``-n auto`` workers (pytest-xdist, one per core, each test file on one worker:
 ``--dist loadfile`` keeps a notebook's cells in order on one kernel). Each worker, and every
-kernel it starts, gets one BLAS thread: two BLAS pools on two cores slowed some stages up to
-8x. Stages two workers need at once are computed once: the stage cache locks per key.
+kernel it starts, gets one BLAS thread: two BLAS pools on two cores made some notebooks run
+7-9x slower. Stages two workers need at once are computed once: the stage cache locks per key.
 """
 
 from __future__ import annotations

@@ -8,7 +8,7 @@
    locks make a notebook wait for a stage another one is computing, never compute it twice),
    started in order but for notebook 00, which evaluates every claim and starts last, when
    the chapters have computed their stages; BLAS runs one thread per kernel then (two pools on
-   two cores slowed a notebook up to 8x); a failing notebook stops the run and names its cell;
+   two cores made notebook 03 run 7-9x slower); a failing notebook stops the run and names its cell;
 2. checks that every plot cell (a top-level ``plt.show()``) produced its figure;
 3. evaluates every claim of ``data/paper/claims.toml`` (:mod:`.claims`);
 4. only then writes, all at once: the figures (``figures/`` or ``--figures``, PNG, named after
@@ -243,14 +243,15 @@ def _execute_all(paths: list[Path], timeout: int, workers: int) -> dict[Path, nb
 
 
 def reproduce(
-    paths: list[Path], out: Path, timeout: int = CELL_TIMEOUT, report: bool = True, workers: int = 2
+    paths: list[Path], out: Path, timeout: int = CELL_TIMEOUT, report: bool = True, workers: int | None = None
 ) -> tuple[list[dict[str, str]], object]:
-    """Execute ``paths`` (``workers`` at a time), then write figures, index and (with ``report``) the report.
+    """Execute ``paths`` (``workers`` at a time, default :data:`WORKERS`), then write figures, index and
+    (with ``report``) the report.
 
     Returns the figure index rows and the report table (or ``None``). Raises
     :class:`ReproductionError` before writing anything if a notebook fails or a figure is missing.
     """
-    executed = _execute_all(paths, timeout, workers)
+    executed = _execute_all(paths, timeout, WORKERS if workers is None else workers)
     if executed and not any(figure_names(nb, p.stem) for p, nb in executed.items()):
         raise ReproductionError("the notebooks produced no figure at all")
     table = None
@@ -295,7 +296,10 @@ def main(argv: list[str] | None = None) -> int:
         "--timeout", type=int, default=CELL_TIMEOUT, help=f"per-cell limit in s (default {CELL_TIMEOUT})"
     )
     parser.add_argument(
-        "--workers", type=int, default=WORKERS, help=f"notebooks run at a time (default {WORKERS}, at most the cores)"
+        "--workers",
+        type=int,
+        default=WORKERS,
+        help=f"notebooks run at a time (default {WORKERS}: two, one on a single core)",
     )
     parser.add_argument(
         "--print",
