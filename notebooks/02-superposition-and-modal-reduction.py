@@ -337,7 +337,7 @@ assert abs(abs(visco.G_H[0]) / static.vertical_stiffness - 1) < 0.01
 # Dynamics*, ch. 19), `ru.response.section_modal`:
 #
 # 1. the **free modes** of every harmonic (rim fixed, tread free) at the frozen moduli, up to
-#    2.5 times twice the band (1250 Hz): eigenvalues $\Lambda$, vertical shapes at the contact
+#    `ru.response.section_modal.FREE_FACTOR` times twice the band: eigenvalues $\Lambda$, vertical shapes at the contact
 #    points $\Psi$ (fore-aft even), vertical momentum $L$;
 # 2. the **residual flexibility** of all the rest at the contact points,
 #    $R = S(0) - \Psi\Lambda^{-1}\Psi^T$;
@@ -448,8 +448,9 @@ print(
 # %%
 # NBVAL_CHECK_OUTPUT
 # Approximation (a), cross-section tire: resonances seen by the tasselli, direct vs modal
-rms = [np.sqrt(np.mean(np.abs(h) ** 2, axis=0)) for h in (section_visco.H, section_reduced.frf.H)]
-section_shift = ru.analysis.peak_comparison(section_visco.freqs, *rms, f_max=f_band + 10, min_ratio=1.0)
+section_shift = ru.analysis.peak_comparison(
+    section_visco.freqs, section_visco.H_rms, section_reduced.frf.H_rms, f_max=f_band + 10, min_ratio=1.0
+)
 print(section_shift.to_string(float_format=lambda v: f"{v:.3f}"))
 
 # %% [markdown]

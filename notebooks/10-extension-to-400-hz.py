@@ -91,13 +91,8 @@ plt.show()
 # %%
 # NBVAL_CHECK_OUTPUT
 # What the 250 Hz model misses on the cleat: each band's RM force against the 400 Hz FE reference
-wide = extension.models[400.0]
-for band, model in extension.models.items():
-    force = np.interp(wide.cleat.t, model.cleat.t, model.cleat_rm)
-    print(
-        f"RM chain 0-{band:.0f} Hz: peak {model.cleat_rm.max():7.1f} N, against the 0-400 Hz FE reference: "
-        f"peak {force.max() / wide.cleat_fe.max() - 1:+.2%}, RMS {ru.analysis.relative_rms_error(force, wide.cleat_fe):.2%}"
-    )
+missed = extension.cleat_against_widest()
+print(missed.to_string(formatters={"RM peak (N)": "{:.1f}".format}, float_format=lambda v: f"{v:+.2%}"))
 
 # %% [markdown]
 # The cleat is short and the tire crosses it in milliseconds: it excites the whole band, and the

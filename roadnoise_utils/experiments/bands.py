@@ -142,6 +142,23 @@ class BandExtension:
             }
         return pd.DataFrame(rows)
 
+    def cleat_against_widest(self) -> pd.DataFrame:
+        """Each band's RM cleat force against the widest band's direct FE force (peak and RMS, -).
+
+        What a narrower model misses of the cleat's content; the RM forces are interpolated onto
+        the widest band's (finer) time grid.
+        """
+        widest = self.models[max(self.models)]
+        rows = {}
+        for band, model in self.models.items():
+            force = np.interp(widest.cleat.t, model.cleat.t, model.cleat_rm)
+            rows[f"0-{band:g} Hz"] = {
+                "RM peak (N)": model.cleat_rm.max(),
+                "peak against the widest FE": force.max() / widest.cleat_fe.max() - 1,
+                "RMS against the widest FE": relative_rms_error(force, widest.cleat_fe),
+            }
+        return pd.DataFrame(rows).T
+
 
 def band_wavelengths(band: float, road_speed: float, cleat_speed: float) -> tuple[float, float]:
     """Shortest wavelengths ``speed / band`` (m) at the road test's and the cleat test's speeds."""

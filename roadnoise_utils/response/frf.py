@@ -68,6 +68,12 @@ class FRFResult:
         """:math:`\\sum_i H_i` (N/m), the left side of the paper's Eq. (i)."""
         return self.H.sum(axis=0)
 
+    @property
+    def H_rms(self) -> np.ndarray:
+        """RMS of :math:`|H_i|` over the tasselli (N/m): the resonances the tasselli see, those that
+        cancel in :math:`H_{tot}` included."""
+        return np.sqrt(np.mean(np.abs(self.H) ** 2, axis=0))
+
 
 class HubForceSolver:
     """Factorise :math:`D(\\omega)` and solve for the hub force, with the symmetric reduction when exact."""

@@ -389,6 +389,28 @@ def apply_identified_damping(
     return eigenvalues.real * (1 + 1j * eta), source
 
 
+def check_options(frozen: str, damping: str, f_band: float) -> None:
+    """Refuse a freezing, damping or band the reduction does not have (both tire models)."""
+    if frozen not in ("complex", "storage"):
+        raise ValueError(f"frozen = {frozen!r}: valid values are 'complex' and 'storage'")
+    if damping not in ("model", "identified") or (frozen == "storage" and damping == "model"):
+        raise ValueError(
+            f"damping = {damping!r} with frozen = {frozen!r}: valid are 'model' or 'identified' with "
+            "frozen='complex', and 'identified' with frozen='storage' (the storage model has no loss)"
+        )
+    if not (np.isfinite(f_band) and f_band > 0):
+        raise ValueError(f"f_band = {f_band} Hz: valid range is (0, inf)")
+
+
+def reference_mode(ident: ModeIdentification, reference_frequency: float | None = None) -> float:
+    """The frozen frequency (Hz): the given one, or the identified mode with the largest static share."""
+    if reference_frequency is None:
+        reference_frequency = float(ident.freqs[np.argmax(np.abs(ident.static_share))])
+    if not (np.isfinite(reference_frequency) and reference_frequency > 0):
+        raise ValueError(f"reference_frequency = {reference_frequency} Hz: valid range is (0, inf)")
+    return float(reference_frequency)
+
+
 def modal_reduction(
     fet: FETModel,
     static: StaticState,
@@ -425,24 +447,13 @@ def modal_reduction(
         Frequencies (Hz) of the quasi-static solves of the residual correction; default
         0, 0.1, 0.25, 0.5, 1 and 1.6 times ``f_band``.
     """
-    if frozen not in ("complex", "storage"):
-        raise ValueError(f"frozen = {frozen!r}: valid values are 'complex' and 'storage'")
-    if damping not in ("model", "identified") or (frozen == "storage" and damping == "model"):
-        raise ValueError(
-            f"damping = {damping!r} with frozen = {frozen!r}: valid are 'model' or 'identified' with "
-            "frozen='complex', and 'identified' with frozen='storage' (the storage model has no loss)"
-        )
-    if not f_band > 0:
-        raise ValueError(f"f_band = {f_band} Hz: valid range is (0, inf)")
+    check_options(frozen, damping, f_band)
     if visco is None:
         visco = frf_visco(fet, static, np.arange(0.0, f_band + 1.0, 1.0), progress=progress)
     if not isinstance(visco, FRFResult):
         raise TypeError(f"visco must be the FRFResult of ru.frf_visco(fet, static, freqs), got {type(visco).__name__}")
     ident = identify_modes(visco.freqs, visco.H_tot, f_max=f_band)
-    if reference_frequency is None:
-        reference_frequency = float(ident.freqs[np.argmax(np.abs(ident.static_share))])
-    if not (np.isfinite(reference_frequency) and reference_frequency > 0):
-        raise ValueError(f"reference_frequency = {reference_frequency} Hz: valid range is (0, inf)")
+    reference_frequency = reference_mode(ident, reference_frequency)
     anchor_freqs = np.array(anchors if anchors is not None else [0.0, 0.1, 0.25, 0.5, 1.0, 1.6]) * (
         1.0 if anchors is not None else f_band
     )

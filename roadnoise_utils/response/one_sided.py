@@ -40,6 +40,7 @@ from threadpoolctl import threadpool_limits
 
 from .. import guards
 from ..road.cleat import point_heights
+from ..tire.active_set import held_contact
 from ..tire.ring_model import UZ, FETModel
 from ..tire.rubber import PronySeries, prony_series
 from ..tire.static import StaticState, check_same_tire, contact_problem
@@ -195,7 +196,9 @@ def quasi_static_run(
     on_profile = np.zeros(travel.size, bool)
     balance, worst, most = 0.0, 0.0, 0
     for k in range(travel.size):
-        f, active, iterations = _static_contact(problem, base + heights[:, k], active)
+        f, active, iterations = held_contact(
+            problem.compliance, base + heights[:, k], active, 1.0 / problem.stiffness_tread, MAX_ITERATIONS
+        )
         forces[k] = f.sum()
         points[k] = active.sum()
         on_profile[k] = bool(np.any(active & (heights[:, k] > 0)))
@@ -223,26 +226,6 @@ def quasi_static_run(
         force_balance=balance,
         iterations=most,
     )
-
-
-def _static_contact(problem, penetration: np.ndarray, active: np.ndarray) -> tuple[np.ndarray, np.ndarray, int]:
-    """Contact forces (N) for the free-surface ``penetration`` (m) of every candidate, one-sided."""
-    k = problem.stiffness_tread
-    for iteration in range(1, MAX_ITERATIONS + 1):
-        idx = np.nonzero(active)[0]
-        f = np.zeros(active.size)
-        if idx.size:
-            c = problem.compliance(idx)
-            matrix = c[idx] + np.diag(1.0 / k[idx])
-            f[idx] = sla.solve(0.5 * (matrix + matrix.T), penetration[idx], assume_a="pos")
-            pen = penetration - c @ f[idx]
-        else:
-            pen = penetration
-        new = np.where(active, f > 0, pen > 0)
-        if np.array_equal(new, active):
-            return f, active, iteration
-        active = new
-    raise RuntimeError(f"quasi-static contact did not converge in {MAX_ITERATIONS} active-set iterations")
 
 
 class _Branches:

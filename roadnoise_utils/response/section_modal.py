@@ -44,7 +44,14 @@ import scipy.linalg as sla
 from ..tire.section_dynamics import frozen_laws, tire_mass
 from ..tire.section_static import SectionStaticState, SectionTire
 from .frf import FRFResult
-from .modal_reduction import ModalModel, ModalReduction, apply_identified_damping, identify_modes
+from .modal_reduction import (
+    ModalModel,
+    ModalReduction,
+    apply_identified_damping,
+    check_options,
+    identify_modes,
+    reference_mode,
+)
 from .section_footprint import EvenFootprint, FootprintFRF
 
 #: Free modes are kept up to ``FREE_FACTOR`` times the highest loaded mode the model must carry.
@@ -162,16 +169,13 @@ def section_loaded_modes(even: EvenFootprint, laws: dict, f_free: float) -> Sect
     )
 
 
-def _check_options(frozen: str, damping: str, f_band: float) -> None:
-    if frozen not in ("complex", "storage"):
-        raise ValueError(f"frozen = {frozen!r}: valid values are 'complex' and 'storage'")
-    if damping not in ("model", "identified") or (frozen == "storage" and damping == "model"):
-        raise ValueError(
-            f"damping = {damping!r} with frozen = {frozen!r}: valid are 'model' or 'identified' with "
-            "frozen='complex', and 'identified' with frozen='storage' (the storage model has no loss)"
-        )
-    if not (np.isfinite(f_band) and f_band > 0):
-        raise ValueError(f"f_band = {f_band} Hz: valid range is (0, inf)")
+def _synthesis(tire, static, reference_frequency: float, frozen: str, f_band: float, f_top: float):
+    """The reduced harmonics for 0-``f_top`` Hz, the laws frozen at ``reference_frequency`` and the
+    loaded modes they give (free modes to ``FREE_FACTOR * 2 f_band``): ``(even, laws, modes)``."""
+    f_free = FREE_FACTOR * 2 * f_band
+    even = EvenFootprint.build(tire, static, f_top, f_free)
+    laws = frozen_laws(tire.ops.laws, 2 * np.pi * reference_frequency, storage_only=frozen == "storage")
+    return even, laws, section_loaded_modes(even, laws, f_free)
 
 
 def _model_of(
@@ -233,21 +237,15 @@ def section_modal_reduction(
     anchors : tuple of float
         Quasi-static anchor frequencies as fractions of ``f_band``, 0 first.
     """
-    _check_options(frozen, damping, f_band)
+    check_options(frozen, damping, f_band)
     if not isinstance(visco, FRFResult):
         raise TypeError(f"visco must be an FRFResult (FootprintFRF.to_frf_result()), got {type(visco).__name__}")
     anchor_freqs = np.asarray(anchors, float) * f_band
     if anchor_freqs[0] != 0.0 or np.any(np.diff(anchor_freqs) <= 0):
         raise ValueError("anchors must start at 0 and increase")
     ident = identify_modes(visco.freqs, visco.H_tot, f_max=f_band)
-    if reference_frequency is None:
-        reference_frequency = float(ident.freqs[np.argmax(np.abs(ident.static_share))])
-    if not (np.isfinite(reference_frequency) and reference_frequency > 0):
-        raise ValueError(f"reference_frequency = {reference_frequency} Hz: valid range is (0, inf)")
-    f_free = FREE_FACTOR * 2 * f_band
-    even = EvenFootprint.build(tire, static, float(anchor_freqs[-1]), f_free)
-    laws = frozen_laws(tire.ops.laws, 2 * np.pi * reference_frequency, storage_only=frozen == "storage")
-    modes = section_loaded_modes(even, laws, f_free)
+    reference_frequency = reference_mode(ident, reference_frequency)
+    even, laws, modes = _synthesis(tire, static, reference_frequency, frozen, f_band, float(anchor_freqs[-1]))
     if damping == "identified":
         eigenvalues, source = apply_identified_damping(modes.eigenvalues, modes.hub_gain, ident, frozen, f_band)
     else:
@@ -301,13 +299,10 @@ def frozen_check(
     what the residual flexibility stands for: the check of the synthesis.
     """
     freqs = np.asarray(freqs, float)
-    _check_options("storage" if storage else "complex", "identified", f_band)
-    f_free = FREE_FACTOR * 2 * f_band
-    even = EvenFootprint.build(tire, static, 1.6 * f_band, f_free)
-    laws = frozen_laws(tire.ops.laws, 2 * np.pi * float(reference_frequency), storage_only=storage)
-    modes = section_loaded_modes(even, laws, f_free)
+    frozen = "storage" if storage else "complex"
+    check_options(frozen, "identified", f_band)
+    even, laws, modes = _synthesis(tire, static, float(reference_frequency), frozen, f_band, 1.6 * f_band)
     anchor = even.footprint(np.zeros(1), laws=laws, inertia=False)
     source = np.full(modes.eigenvalues.size, "frozen model", dtype=object)
-    frozen = "storage" if storage else "complex"
     model = _model_of(modes, even, anchor, modes.eigenvalues, source, reference_frequency, frozen)
     return FrozenCheck(model.frf(freqs), even.footprint(freqs, laws=laws), modes.eigenvalues)

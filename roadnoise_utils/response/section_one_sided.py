@@ -22,11 +22,11 @@ yet (the ring model's Newmark with the Prony form, :mod:`.one_sided`).
 from __future__ import annotations
 
 import numpy as np
-import scipy.linalg as sla
 
 from .. import guards
 from ..road.cleat import point_heights
 from ..tire import cross_section
+from ..tire.active_set import held_contact
 from ..tire.section_contact import harmonic_flexibility, vertical_compliance
 from ..tire.section_static import SectionStaticState, SectionTire, check_contact_memory
 from .one_sided import ContactRun
@@ -36,24 +36,6 @@ MAX_ITERATIONS = 100
 #: Points farther than this below the road at the profile's highest are left out of the solves (m);
 #: every step checks that none of them penetrates.
 MARGIN = 0.005
-
-
-def _held_contact(
-    compliance: np.ndarray, penetration: np.ndarray, active: np.ndarray
-) -> tuple[np.ndarray, np.ndarray, int]:
-    """Contact forces (N) of the points for the surface ``penetration`` (m), one-sided, deflection held."""
-    for iteration in range(1, MAX_ITERATIONS + 1):
-        idx = np.nonzero(active)[0]
-        forces = np.zeros(active.size)
-        if idx.size:
-            block = compliance[np.ix_(idx, idx)]
-            forces[idx] = sla.solve(0.5 * (block + block.T), penetration[idx], assume_a="pos")
-        gap = compliance[:, idx] @ forces[idx] - penetration  # > 0: above the road
-        new = np.where(active, forces > 0, gap < 0)
-        if np.array_equal(new, active):
-            return forces, active, iteration
-        active = new
-    raise RuntimeError(f"quasi-static contact did not converge in {MAX_ITERATIONS} active-set iterations")
 
 
 def section_quasi_static_run(
@@ -86,7 +68,9 @@ def section_quasi_static_run(
     worst, most = 0.0, 0
     for k in range(travel.size):
         penetration = base + heights[:, k]
-        forces, active, iterations = _held_contact(reach, penetration[near], active)
+        forces, active, iterations = held_contact(
+            lambda cols: reach[:, cols], penetration[near], active, np.zeros(near.size), MAX_ITERATIONS
+        )
         hub[k] = forces.sum()
         points[k] = active.sum()
         on_profile[k] = bool(np.any(active & (heights[near, k] > 0)))

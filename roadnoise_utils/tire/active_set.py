@@ -9,6 +9,8 @@ contact grid from the harmonic sum. Both then solve the same problem: contact fo
           \\mathbf 1^T\\lambda = W,
 
 the active set updated until no point in contact pulls and no point out of contact penetrates.
+:func:`held_contact` solves the same contact with the rise held instead of the load (the cleat
+passages of both models).
 """
 
 from __future__ import annotations
@@ -68,3 +70,30 @@ def active_set(
         if not active.any():
             raise RuntimeError("active set became empty; the contact problem is ill-posed")
     raise RuntimeError(f"contact active set did not converge in {max_iterations} iterations")
+
+
+def held_contact(
+    compliance, penetration: np.ndarray, active: np.ndarray, extra: np.ndarray, max_iterations: int = 100
+) -> tuple[np.ndarray, np.ndarray, int]:
+    r"""One-sided contact with the road held (the deflection given, not the load): the cleat passages.
+
+    Forces ``lambda >= 0`` with :math:`(C + \mathrm{diag}(e))_{AA}\lambda_A = p_A` on the active
+    set ``A``, ``p`` the penetration of the unloaded surface (m), until no point in contact pulls
+    and none out of contact penetrates; ``compliance(columns)`` and ``extra`` as in
+    :func:`active_set`, ``active`` the starting set. Returns the forces (N), the active set and
+    the iterations.
+    """
+    for iteration in range(1, max_iterations + 1):
+        idx = np.nonzero(active)[0]
+        forces = np.zeros(active.size)
+        remaining = penetration
+        if idx.size:
+            c = compliance(idx)
+            block = c[idx] + np.diag(extra[idx])
+            forces[idx] = sla.solve(0.5 * (block + block.T), penetration[idx], assume_a="pos")
+            remaining = penetration - c @ forces[idx]
+        new = np.where(active, forces > 0, remaining > 0)
+        if np.array_equal(new, active):
+            return forces, active, iteration
+        active = new
+    raise RuntimeError(f"quasi-static contact did not converge in {max_iterations} active-set iterations")
