@@ -4,12 +4,15 @@ Run on demand (never as a timed test)::
 
     python benchmarks/bench_contact.py               # 3 repeats
     python benchmarks/bench_contact.py --repeats 5
+    python benchmarks/bench_contact.py --repeats 2 --cross-section 165_65R14_cross_section
 
 Times, as ranges over the repeats (shared machines are noisy): the one-sided quasi-static run
 (contact solves) and the 30 km/h run (Newmark, 0.7 m of travel) on the refined tire of
 notebook 08, the same two runs of the linear RM chain (notebook 04) and the linear FE
 frequency-domain passage (its second method). Tire stages are built once before timing;
-the one-sided runs include their own set-up (factorisation, dynamic compliance).
+the one-sided runs include their own set-up (factorisation, dynamic compliance). With
+``--cross-section`` the cross-section tire's runs too (notebook 08, section 6): the reduction of
+its harmonics (once) and its quasi-static and 30 km/h runs.
 """
 
 from __future__ import annotations
@@ -40,6 +43,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--tire", default="165_65R14")
     parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--cross-section", default="", help="also time this cross-section tire's runs (slow)")
     args = parser.parse_args()
     conditions = ru.experiments.one_sided_conditions()
     cleat = conditions.cleat
@@ -80,6 +84,8 @@ def main() -> None:
     rows.append(
         (f"linear FE, frequency domain, {cleat.dynamic_kmh:.0f} km/h", spec.mesh.n_elements, t, force.max(), force.size)
     )
+    if args.cross_section:
+        rows += cross_section_rows(args.cross_section, args.repeats, conditions)
     print(
         f"tire {spec.name}, cleat {cleat.height * 1e3:.0f} x {cleat.base * 1e3:.0f} mm, travel {conditions.distance} m, {args.repeats} repeats"
     )
@@ -88,6 +94,30 @@ def main() -> None:
     for label, elements, times, peak, samples in rows:
         print(f"| {label} | {elements} | {span(times)} | {peak:.0f} | {samples} |")
     print(f"peak Python memory of the one-sided {cleat.dynamic_kmh:.0f} km/h run: {peak_memory / 1e6:.0f} MB")
+
+
+def cross_section_rows(tire: str, repeats: int, conditions) -> list[tuple]:
+    """The cross-section tire's one-sided runs: its harmonics' reduction, the quasi-static and the 30 km/h run."""
+    from roadnoise_utils.response import section_one_sided
+    from roadnoise_utils.tire import section_stepping
+
+    cleat = conditions.cleat
+    built = ru.section_stages.section_tire(tire)
+    static = ru.section_stages.section_static(tire, "drum", drum_radius=cleat.drum_radius)
+    profile = cleat_profile(cleat.height, cleat.base, cleat.shape)
+    label = "cross-section"
+    t, reduced = timed(1, section_stepping.reduce_all, built, 400.0)
+    rows = [(f"{label}: reduce and make passive its 401 harmonics", "-", t, float("nan"), len(reduced))]
+    t, qs = timed(
+        repeats, section_one_sided.section_quasi_static_run, built, static, profile, conditions.sweep_distance, 1e-3
+    )
+    rows.append((f"{label}: one-sided, quasi-static (1 mm steps)", "-", t, qs.peak_force, len(qs.distance)))
+    t, dyn = timed(
+        repeats, section_one_sided.section_dynamic_run, built, static, profile, cleat.dynamic_speed, conditions.distance,
+        dt=ru.experiments.section_contact.SECTION_DT, reduced=reduced,
+    )  # fmt: skip
+    rows.append((f"{label}: one-sided, {cleat.dynamic_kmh:.0f} km/h (raw peak)", "-", t, dyn.peak_force, len(dyn.t)))
+    return rows
 
 
 if __name__ == "__main__":

@@ -1,16 +1,17 @@
 """The paper's tests, each reading its ``data/conditions`` file once and returning a typed result.
 
-=============================  ===============================================  ==========
-experiment                     what it runs                                     notebook
-=============================  ===============================================  ==========
-:func:`cleat_test`             drum cleat, quasi-static and dynamic, FE check   04
-:func:`one_sided_cleat_test`   the same with one-sided contact of the FE tire   08
-:func:`moving_hub_check`       RM moving hub vs the FE tire with its hub free   05
-:func:`road_test`              textures flowing through the footprint           06
-:func:`quarter_car`            the corner on the road test, spectra             07
-:func:`calibration_table`      the tire against its calibration targets         01
-:func:`band_extension`         the chain at 0-250 and 0-400 Hz, cleat and road  10
-=============================  ===============================================  ==========
+=============================  ================================================  ==========
+experiment                     what it runs                                      notebook
+=============================  ================================================  ==========
+:func:`cleat_test`             drum cleat, quasi-static and dynamic, FE check    04
+:func:`one_sided_cleat_test`   the same with one-sided contact of the FE tire    08
+:func:`section_cleat_test`     the same on the cross-section tire (notebook 09)  08
+:func:`moving_hub_check`       RM moving hub vs the FE tire with its hub free    05
+:func:`road_test`              textures flowing through the footprint            06
+:func:`quarter_car`            the corner on the road test, spectra              07
+:func:`calibration_table`      the tire against its calibration targets          01
+:func:`band_extension`         the chain at 0-250 and 0-400 Hz, cleat and road   10
+=============================  ================================================  ==========
 
 ``*_conditions`` functions resolve a test's defaults (an argument left at ``None`` is the
 paper's value); the numerics below them take explicit arguments and read no TOML.
@@ -27,6 +28,7 @@ from . import (
     one_sided_cleat,
     paper_defaults,
     road,
+    section_contact,
 )
 from .bands import BandExtension, BandModel, band_extension
 from .calibration import calibration_table
@@ -43,6 +45,7 @@ from .one_sided_cleat import (
     speed_sweep,
 )
 from .road import RoadTest, RoadTestConditions, road_test, road_test_conditions
+from .section_contact import section_cleat_test, section_frozen_check
 
 __all__ = [
     "BandExtension",
@@ -81,6 +84,9 @@ __all__ = [
     "road",
     "road_test",
     "road_test_conditions",
+    "section_cleat_test",
+    "section_contact",
+    "section_frozen_check",
     "speed_sweep",
     "suspension_conditions",
 ]

@@ -24,6 +24,8 @@ from ..response.fe_reference import band_limited, fe_point_response
 from ..response.one_sided import ContactRun
 from ..rm.simulation import modal_sections
 from ..road.cleat import cleat_profile, point_heights
+from ..tire.cross_section import CrossSectionSpec
+from ..tire.section_static import SectionStaticState
 from ..tire.spec import TireSpec
 from ..tire.static import DEFLECTION_LIMIT, StaticState
 from .cleat import DECAY_COMPONENTS, PAPER_TIRE, CleatConditions, cleat_conditions, in_band, run_cleat
@@ -94,23 +96,24 @@ class OneSidedCleatTest:
 
     Attributes
     ----------
-    tire : TireSpec
-        The tire with the refined mesh.
+    tire : TireSpec or CrossSectionSpec
+        The tire (the ring with the refined mesh).
     conditions : OneSidedConditions
         The resolved conditions.
-    static : StaticState
-        The refined tire loaded on the drum.
+    static : StaticState or SectionStaticState
+        The tire loaded on the drum.
     quasi_static, dynamic : ContactRun
-        The base curve (contact solves) and the run at the dynamic speed (time stepping).
+        The base curve (contact solves) and the run at the dynamic speed (time stepping; on the
+        cross-section tire band-limited to 250 Hz, :mod:`.section_contact`).
     peaks : pandas.DataFrame
         The two largest peaks of the dynamic run while the cleat touches the tire.
     decay : pandas.DataFrame
         Damped components of the free decay after the cleat has left (largest first).
     """
 
-    tire: TireSpec
+    tire: TireSpec | CrossSectionSpec
     conditions: OneSidedConditions
-    static: StaticState
+    static: StaticState | SectionStaticState
     quasi_static: ContactRun
     dynamic: ContactRun
     peaks: pd.DataFrame
@@ -187,10 +190,10 @@ def one_sided_cleat_test(
     check_cleat_height(static, test.cleat.height)
     quasi = _run(spec, test, 0.0, test.distance)
     dynamic = _run(spec, test, test.cleat.dynamic_speed, test.distance)
-    return OneSidedCleatTest(spec, test, static, quasi, dynamic, *_analyse(dynamic, static))
+    return OneSidedCleatTest(spec, test, static, quasi, dynamic, *peaks_and_decay(dynamic))
 
 
-def _analyse(run: ContactRun, static: StaticState) -> tuple[pd.DataFrame, pd.DataFrame]:
+def peaks_and_decay(run: ContactRun) -> tuple[pd.DataFrame, pd.DataFrame]:
     """Peaks while the cleat touches the tire, and the free decay after it has left the tread."""
     touching = np.nonzero(run.on_profile)[0]
     last = run.distance[touching[-1]] if touching.size else run.distance[0]

@@ -19,7 +19,8 @@ from ..experiments.bands import cleat_chain
 from ..experiments.cleat import CleatTest, cleat_test
 from ..experiments.corner import PAPER_CAR, QuarterCarTest, quarter_car
 from ..experiments.moving_hub import moving_hub_check
-from ..experiments.one_sided_cleat import OneSidedCleatTest, one_sided_cleat_test, one_sided_conditions
+from ..experiments.one_sided_cleat import OneSidedCleatTest, one_sided_cleat_test
+from ..experiments.section_contact import section_cleat_test
 from ..response.frf import FRFResult
 from ..rm.fitting import fit_tasselli
 from ..road.kernels import tassellation_error
@@ -60,7 +61,9 @@ def _cleat(model: str) -> CleatTest:
 
 @functools.cache
 def _contact(model: str) -> OneSidedCleatTest:
-    return one_sided_cleat_test(tire_of(model))
+    if model == "ring":
+        return one_sided_cleat_test(tire_of(model))
+    return section_cleat_test(tire_of(model))
 
 
 @functools.cache
@@ -170,18 +173,6 @@ def _two_peaks(model: str, which: str) -> float:
     return float(distinct_peaks(run.distance, run.hub_force, (-0.15, 0.15)))
 
 
-def _contact_quasi_static(model: str) -> float:
-    """The ring's one-sided cleat test; on the cross-section tire its quasi-static passage (the only one it has)."""
-    if model == "ring":
-        return _contact(model).quasi_static.peak_force
-    test = one_sided_conditions()
-    c = test.cleat
-    run = section_stages.quasi_static_cleat(
-        tire_of(model), c.height, c.base, c.shape, c.drum_radius, test.sweep_distance
-    )
-    return run.peak_force
-
-
 EVALUATORS: dict[str, Callable[[str], float]] = {
     "fe_dof": _fe_dof,
     "n_tasselli": lambda m: float(stages.solve_static(tire_of(m)).tasselli.n),
@@ -209,7 +200,7 @@ EVALUATORS: dict[str, Callable[[str], float]] = {
     "fig11_textures": lambda m: _hub_rms(m, "rough") / _hub_rms(m, "smooth"),
     "fig14_modes": _fig14_modes,
     "contact_two_peaks": lambda m: _two_peaks(m, "contact"),
-    "contact_quasi_static": _contact_quasi_static,
+    "contact_quasi_static": lambda m: _contact(m).quasi_static.peak_force,
     "contact_dynamic": lambda m: _contact(m).dynamic.peak_force,
     "contact_ratio": lambda m: _contact(m).ratio,
     "contact_decay": lambda m: float(_contact(m).decay["frequency (Hz)"].iloc[0]),

@@ -1,17 +1,20 @@
 """Cached stages of the cross-section tire (``[tire] model = "cross-section"``).
 
-==========================  ==============================================================
-stage                       caches
-==========================  ==============================================================
-:func:`section_static`      :func:`roadnoise_utils.tire.section_static.solve_section_static`
-:func:`section_footprint`   :func:`roadnoise_utils.response.section_footprint.footprint_frf`
-                            (default 0-400 Hz every 1 Hz)
-:func:`section_modal`       :func:`roadnoise_utils.response.section_modal.section_modal_reduction`
-                            on the default sweep
-:func:`frozen_check`        :func:`roadnoise_utils.response.section_modal.frozen_check`
-:func:`quasi_static_cleat`  :func:`roadnoise_utils.response.section_one_sided.section_quasi_static_run`
-                            of a cleat on the drum
-==========================  ==============================================================
+===========================  =============================================================
+stage                        caches
+===========================  =============================================================
+:func:`section_static`       :func:`roadnoise_utils.tire.section_static.solve_section_static`
+:func:`section_footprint`    :func:`roadnoise_utils.response.section_footprint.footprint_frf`
+                             (default 0-400 Hz every 1 Hz)
+:func:`section_modal`        :func:`roadnoise_utils.response.section_modal.section_modal_reduction`
+                             on the default sweep
+:func:`frozen_check`         :func:`roadnoise_utils.response.section_modal.frozen_check`
+:func:`quasi_static_cleat`   :func:`roadnoise_utils.response.section_one_sided.section_quasi_static_run`
+                             of a cleat on the drum
+:func:`harmonic_reductions`  :func:`roadnoise_utils.tire.section_stepping.reduce_all` (every harmonic)
+:func:`dynamic_cleat`        :func:`roadnoise_utils.response.section_one_sided.section_dynamic_run`
+                             of a cleat on the drum (one-sided or frozen contact)
+===========================  =============================================================
 
 :func:`section_tire` (mesh, harmonic matrices and inflation: about half a second) is not cached.
 """
@@ -31,6 +34,7 @@ from ..response.one_sided import ContactRun
 from ..response.section_footprint import FootprintFRF
 from ..road.cleat import cleat_profile
 from ..tire import section_static as static_module
+from ..tire import section_stepping as stepping
 from ..tire import spec
 from ..tire.cross_section import CrossSectionSpec
 from ..tire.section_static import SectionStaticState, SectionTire, build_section_tire
@@ -181,3 +185,49 @@ def quasi_static_cleat(
 
     runs = (one_sided.section_quasi_static_run, static_module.solve_section_static)
     return cached(quasi_static_cleat, {**inputs, **options}, compute, runs=runs)
+
+
+def harmonic_reductions(tire: SectionTireLike, f_max: float = 400.0) -> list:
+    """Cached :func:`.tire.section_stepping.reduce_all`: every harmonic's Ritz basis for the time-stepped runs."""
+    inputs = {"tire": load_section_tire(tire), "f_max": float(f_max)}
+
+    def compute() -> list:
+        return stepping.reduce_all(build_section_tire(inputs["tire"]), inputs["f_max"])
+
+    return cached(harmonic_reductions, inputs, compute, runs=(stepping.reduce_all,))
+
+
+def dynamic_cleat(
+    tire: SectionTireLike,
+    speed: float,
+    height: float,
+    base: float,
+    shape: str,
+    drum_radius: float,
+    distance: tuple[float, float],
+    frozen: bool = False,
+    dt: float | None = None,
+) -> ContactRun:
+    """Cached dynamic cleat passage on the drum, one-sided (or ``frozen``) contact (speed in m/s, lengths in m)."""
+    inputs = _inputs(tire, "drum", None, drum_radius)
+    options = {
+        "speed": float(speed),
+        "height": float(height),
+        "base": float(base),
+        "shape": shape,
+        "distance": tuple(float(d) for d in distance),
+        "frozen": bool(frozen),
+        "dt": None if dt is None else float(dt),
+    }
+    state = section_static(tire, "drum", drum_radius=drum_radius)
+
+    def compute() -> ContactRun:
+        built = build_section_tire(inputs["tire"])
+        profile = cleat_profile(height, base, shape)
+        reduced = harmonic_reductions(tire)
+        return one_sided.section_dynamic_run(
+            built, state, profile, speed, options["distance"], dt=dt, frozen=frozen, reduced=reduced
+        )
+
+    runs = (one_sided.section_dynamic_run, stepping, static_module.solve_section_static)
+    return cached(dynamic_cleat, {**inputs, **options}, compute, runs=runs)

@@ -42,7 +42,7 @@ from .. import guards
 from ..road.cleat import point_heights
 from ..tire.active_set import held_contact
 from ..tire.ring_model import UZ, FETModel
-from ..tire.rubber import PronySeries, prony_series
+from ..tire.rubber import PronyBranches, prony_series
 from ..tire.static import StaticState, check_same_tire, contact_problem
 
 #: Tread points further than this outside the static footprint are not contact candidates (m): a 15 mm
@@ -228,29 +228,6 @@ def quasi_static_run(
     )
 
 
-class _Branches:
-    """Prony branches of one compound or layer: weights, times and their step constants."""
-
-    def __init__(self, series: PronySeries, dt: float):
-        self.weights = series.weights[series.weights > 0]
-        self.times = series.times[series.weights > 0]
-        decay, gain, self.factor = PronySeries(self.weights, self.times, 0.0, series.band).step_constants(dt)
-        self.decay, self.gain = decay, gain
-        self.rest = 1.0 - decay - gain
-
-    def history(self, states: np.ndarray, value: np.ndarray) -> np.ndarray:
-        """:math:`\\sum_m a_m (E_m v_m + (1 - E_m - \\beta_m) u)`: the step's history term."""
-        return (self.weights * self.decay) @ states + (self.weights @ self.rest) * value
-
-    def update(self, states: np.ndarray, old: np.ndarray, new: np.ndarray) -> np.ndarray:
-        """Auxiliary states at the end of the step."""
-        return self.decay[:, None] * states + self.gain[:, None] * new[None, :] + self.rest[:, None] * old[None, :]
-
-    def extra(self, states: np.ndarray, value: np.ndarray) -> np.ndarray:
-        """:math:`\\sum_m a_m (u - v_m)`: the branches' share of the force, per unit stiffness."""
-        return self.weights.sum() * value - self.weights @ states
-
-
 def dynamic_run(
     fet: FETModel,
     static: StaticState,
@@ -315,7 +292,7 @@ class _DynamicModel:
         self.K_parts = {name: restrict(k) for name, k in fet.K_compound.items()}
         self.hub_elastic = fet.K_elastic[hub].toarray().ravel()[free]
         self.hub_parts = {name: k[hub].toarray().ravel()[free] for name, k in fet.K_compound.items()}
-        self.branches = {name: _Branches(prony_series(fet.laws[name]), dt) for name in [*self.K_parts, "tread"]}
+        self.branches = {name: PronyBranches(prony_series(fet.laws[name]), dt) for name in [*self.K_parts, "tread"]}
         k_eff = (4.0 / dt**2) * self.M + self.K_elastic
         for name, k in self.K_parts.items():
             k_eff = k_eff + self.branches[name].factor * k

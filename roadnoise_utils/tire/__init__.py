@@ -9,7 +9,8 @@ cross-section (DESIGN section 2b, ``[tire] model = "cross-section"``): ``cross_s
 (validated construction files) -> ``laminate`` (layer constants) -> ``section_geometry`` and
 ``section_mesh`` (the layered mesh) -> ``waveguide`` and ``section_model`` (harmonic matrices,
 inflation) -> ``section_contact`` and ``section_static`` (Green's functions, the loaded tire)
--> ``section_dynamics`` (reduced harmonic receptances); ``section_checks`` verifies it.
+-> ``section_dynamics`` (reduced harmonic receptances) -> ``section_stepping`` (the harmonics
+stepped in time, for contact loss); ``section_checks`` verifies it.
 """
 
 from . import (
@@ -27,6 +28,7 @@ from . import (
     section_mesh,
     section_model,
     section_static,
+    section_stepping,
     spec,
     static,
     symmetry,
@@ -50,6 +52,7 @@ __all__ = [
     "section_mesh",
     "section_model",
     "section_static",
+    "section_stepping",
     "waveguide",
     "BeltMesh",
     "FETModel",

@@ -156,3 +156,30 @@ def prony_series(
     fitted = 1.0 + basis @ weights
     error = float(np.max(np.abs(fitted - law.ratio(omega)) / np.abs(law.ratio(omega))))
     return PronySeries(weights=weights, times=times, max_error=error, band=(f_min, f_max))
+
+
+class PronyBranches:
+    """The Prony branches of one compound or layer in a time step ``dt`` (s): weights, times and step constants.
+
+    Shared by the time-stepped runs of both tire models (:mod:`roadnoise_utils.response.one_sided`,
+    :mod:`.section_stepping`); zero-weight terms are dropped.
+    """
+
+    def __init__(self, series: PronySeries, dt: float):
+        self.weights = series.weights[series.weights > 0]
+        self.times = series.times[series.weights > 0]
+        decay, gain, self.factor = PronySeries(self.weights, self.times, 0.0, series.band).step_constants(dt)
+        self.decay, self.gain = decay, gain
+        self.rest = 1.0 - decay - gain
+
+    def history(self, states: np.ndarray, value: np.ndarray) -> np.ndarray:
+        """:math:`\\sum_m a_m (E_m v_m + (1 - E_m - \\beta_m) u)`: the step's history term."""
+        return (self.weights * self.decay) @ states + (self.weights @ self.rest) * value
+
+    def update(self, states: np.ndarray, old: np.ndarray, new: np.ndarray) -> np.ndarray:
+        """Auxiliary states at the end of the step."""
+        return self.decay[:, None] * states + self.gain[:, None] * new[None, :] + self.rest[:, None] * old[None, :]
+
+    def extra(self, states: np.ndarray, value: np.ndarray) -> np.ndarray:
+        """:math:`\\sum_m a_m (u - v_m)`: the branches' share of the force, per unit stiffness."""
+        return self.weights.sum() * value - self.weights @ states

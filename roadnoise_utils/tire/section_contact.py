@@ -19,7 +19,7 @@ frictionless while loading, solved with the same primal active set as the ring m
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 import scipy.sparse.linalg as spla
@@ -107,6 +107,20 @@ def contact_grid(mesh: SectionMesh, line: Meridian, spacing: float, outer_radius
         theta=dtheta * np.arange(-m, m + 1),
         dtheta=dtheta,
     )
+
+
+def extended_grid(grid: ContactGrid, half_length: float) -> tuple[ContactGrid, int]:
+    """The grid with rows out to ``half_length`` (m along the tread) each side, and how many rows it adds per side.
+
+    The static footprint needs rows to :data:`CANDIDATE_HALF_LENGTH`; a cleat on a drum meets the
+    tread farther ahead (a 15 mm cleat on the 1.25 m drum about 105 mm ahead of the axle).
+    """
+    m = (grid.n_rows - 1) // 2
+    wanted = int(np.ceil(half_length / (grid.dtheta * grid.radius.max())))
+    if wanted <= m:
+        return grid, 0
+    theta = grid.dtheta * np.arange(-wanted, wanted + 1)
+    return replace(grid, theta=theta), wanted - m
 
 
 def harmonic_flexibility(

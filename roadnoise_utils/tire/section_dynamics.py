@@ -109,11 +109,12 @@ def harmonic_modes(ops: HarmonicOperators, n: int, omega: float, cutoff: float, 
 
 
 def reduce_harmonic(
-    ops: HarmonicOperators, dofs: np.ndarray, n: int, f_max: float, cutoff: float | None
+    ops: HarmonicOperators, dofs: np.ndarray, n: int, f_max: float, cutoff: float | None, both_ends: bool = True
 ) -> ReducedHarmonic:
     """Reduce harmonic ``n`` for the contact DOF ``dofs`` (see the module notes).
 
     ``cutoff`` (Hz) bounds the modes added to the basis; ``None`` for a quasi-static harmonic.
+    ``both_ends=False`` keeps only the static shapes at 0 Hz (half the basis of a quasi-static harmonic).
     """
     free = ops.free
     position = _free_positions(ops, dofs)
@@ -121,7 +122,8 @@ def reduce_harmonic(
     rhs[position, np.arange(dofs.size)] = 1.0
     w_max = 2 * np.pi * f_max
     vectors = [
-        spla.splu(ops.stiffness(n, w, storage_only=True)[free][:, free].tocsc()).solve(rhs) for w in (0.0, w_max)
+        spla.splu(ops.stiffness(n, w, storage_only=True)[free][:, free].tocsc()).solve(rhs)
+        for w in ((0.0, w_max) if both_ends else (0.0,))
     ]
     n_modes = 0
     if cutoff is not None:
