@@ -6,8 +6,8 @@
    plotting backend whatever ``MPLBACKEND`` says (a per-cell time limit, one retry of a
    stalled notebook), two at a time on two cores (``--workers``; the stage cache's per-key
    locks make a notebook wait for a stage another one is computing, never compute it twice),
-   started in order but for notebook 00, which evaluates every claim and starts last, when
-   the chapters have computed their stages; BLAS runs one thread per kernel then (two pools on
+   the longest first (``cold_seconds`` in ``data/collection.toml``) but for notebook 00, which
+   evaluates every claim and starts last, when the chapters have computed their stages; BLAS runs one thread per kernel then (two pools on
    two cores made notebook 03 run 7-9x slower); a failing notebook stops the run and names its cell;
 2. checks that every plot cell (a top-level ``plt.show()``) produced its figure;
 3. evaluates every claim of ``data/paper/claims.toml`` (:mod:`.claims`);
@@ -224,11 +224,22 @@ def _timed_execution(path: Path, timeout: int, one_thread: bool) -> tuple[nbform
     return nb, time.perf_counter() - start
 
 
-def _execute_all(paths: list[Path], timeout: int, workers: int) -> dict[Path, nbformat.NotebookNode]:
-    """Every notebook executed, ``workers`` at a time (started in order); the first failure stops the run."""
+def start_order(paths: list[Path], seconds: dict[Path, float]) -> list[Path]:
+    """The chapters (``paths[1:]``) longest expected ``seconds`` first (ties in order), then the overview ``paths[0]``."""
+    return sorted(paths[1:], key=lambda p: -seconds.get(p, 0.0)) + paths[:1]
+
+
+def _execute_all(
+    paths: list[Path], timeout: int, workers: int, seconds: dict[Path, float] | None = None
+) -> dict[Path, nbformat.NotebookNode]:
+    """Every notebook executed, ``workers`` at a time; the first failure stops the run.
+
+    The chapters start longest first by their expected ``seconds`` (in order without them: a
+    long notebook started last keeps one core busy alone at the end); the overview (first)
+    evaluates every claim: started last, it finds the chapters' stages computed.
+    """
     done = {}
-    # the overview (first) evaluates every claim: started last, it finds the chapters' stages computed
-    started = paths[1:] + paths[:1]
+    started = start_order(paths, seconds or {})
     with ProcessPoolExecutor(max_workers=workers, mp_context=multiprocessing.get_context("spawn")) as pool:
         futures = {pool.submit(_timed_execution, path, timeout, workers > 1): path for path in started}
         try:
@@ -243,15 +254,20 @@ def _execute_all(paths: list[Path], timeout: int, workers: int) -> dict[Path, nb
 
 
 def reproduce(
-    paths: list[Path], out: Path, timeout: int = CELL_TIMEOUT, report: bool = True, workers: int | None = None
+    paths: list[Path],
+    out: Path,
+    timeout: int = CELL_TIMEOUT,
+    report: bool = True,
+    workers: int | None = None,
+    seconds: dict[Path, float] | None = None,
 ) -> tuple[list[dict[str, str]], object]:
-    """Execute ``paths`` (``workers`` at a time, default :data:`WORKERS`), then write figures, index and
-    (with ``report``) the report.
+    """Execute ``paths`` (``workers`` at a time, default :data:`WORKERS`, longest expected ``seconds``
+    first), then write figures, index and (with ``report``) the report.
 
     Returns the figure index rows and the report table (or ``None``). Raises
     :class:`ReproductionError` before writing anything if a notebook fails or a figure is missing.
     """
-    executed = _execute_all(paths, timeout, WORKERS if workers is None else workers)
+    executed = _execute_all(paths, timeout, WORKERS if workers is None else workers, seconds)
     if executed and not any(figure_names(nb, p.stem) for p, nb in executed.items()):
         raise ReproductionError("the notebooks produced no figure at all")
     table = None
@@ -320,12 +336,14 @@ def main(argv: list[str] | None = None) -> int:
         table = claims.report()
         claims.write_report(table, out)
         return _summary(table, out)
-    paths = [args.notebooks / nb["file"] for nb in notebooks() if nb["status"] == "ready"]
+    ready = [nb for nb in notebooks() if nb["status"] == "ready"]
+    paths = [args.notebooks / nb["file"] for nb in ready]
+    seconds = {args.notebooks / nb["file"]: float(nb.get("cold_seconds", 0.0)) for nb in ready}
     missing = [str(p) for p in paths if not p.is_file()]
     if missing:
         parser.error(f"--notebooks {args.notebooks}: missing {', '.join(missing)}")
     try:
-        rows, table = reproduce(paths, out, args.timeout, workers=args.workers)
+        rows, table = reproduce(paths, out, args.timeout, workers=args.workers, seconds=seconds)
     except ReproductionError as exc:
         print(f"reproduction failed, nothing written: {exc}")
         return 2

@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 import subprocess
 import sys
+from pathlib import Path
 
 import nbformat
 import numpy as np
@@ -161,3 +162,15 @@ def test_main_exits_non_zero_and_keeps_the_figures_on_failure(tmp_path, monkeypa
     monkeypatch.setattr(reproduce, "notebooks", lambda: [{"file": "00-overview.ipynb", "status": "ready"}])
     assert reproduce.main(["--notebooks", str(notebooks), "--figures", str(out)]) == 2
     assert [p.name for p in out.iterdir()] == ["kept.png"]
+
+
+def test_chapters_start_longest_first_and_the_overview_last():
+    paths = [Path(f"{i:02d}.ipynb") for i in range(5)]
+    seconds = {paths[1]: 10.0, paths[2]: 90.0, paths[4]: 40.0}  # paths[3]: unknown, 0
+    assert reproduce.start_order(paths, seconds) == [paths[2], paths[4], paths[1], paths[3], paths[0]]
+    assert reproduce.start_order(paths, {}) == paths[1:] + paths[:1]
+
+
+def test_the_collection_gives_every_ready_notebook_its_cold_time():
+    ready = [nb for nb in collection.notebooks() if nb["status"] == "ready"]
+    assert all(float(nb["cold_seconds"]) > 0 for nb in ready)
