@@ -22,6 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 from numpy.typing import ArrayLike
+from scipy.linalg.blas import daxpy
 
 
 @dataclass(frozen=True)
@@ -179,6 +180,15 @@ class PronyBranches:
     def update(self, states: np.ndarray, old: np.ndarray, new: np.ndarray) -> np.ndarray:
         """Auxiliary states at the end of the step."""
         return self.decay[:, None] * states + self.gain[:, None] * new[None, :] + self.rest[:, None] * old[None, :]
+
+    def update_in_place(self, states: np.ndarray, old: np.ndarray, new: np.ndarray) -> None:
+        """:meth:`update` written into ``states`` (C-contiguous float64): no temporaries of its size."""
+        if states.dtype != np.float64 or not states.flags.c_contiguous:
+            raise ValueError("states must be a C-contiguous float64 array to be updated in place")
+        states *= self.decay[:, None]
+        for row, gain, rest in zip(states, self.gain, self.rest):
+            daxpy(new, row, a=gain)  # in place: each row is contiguous
+            daxpy(old, row, a=rest)
 
     def extra(self, states: np.ndarray, value: np.ndarray) -> np.ndarray:
         """:math:`\\sum_m a_m (u - v_m)`: the branches' share of the force, per unit stiffness."""

@@ -197,6 +197,7 @@ class _Group:
         self.acceleration = np.zeros_like(self.q)
         self.unbalance = np.zeros_like(self.q)  # external minus internal force (M = I: the inertia force)
         self.states = {c: np.zeros((branches[c].weights.size, self.q.size)) for c in names}
+        self.stacked = np.zeros((h_count, self.operator.shape[2], 2))  # the products' right-hand side
 
     def flexibility(self) -> np.ndarray:
         """:math:`(1 - \\alpha_f) C A^{-1} C^T` per harmonic (h, d, d): the step's compliance at the contact DOF."""
@@ -318,11 +319,11 @@ class HarmonicStepper:
         self._free = []
         for g in self.groups:
             ahead = g.q + dt * g.velocity + (0.5 - a.beta) * dt**2 * g.acceleration
-            stacked = [inertia * ahead - a.alpha_m * g.acceleration + a.alpha_f * g.unbalance]
-            flat = g.q.ravel()
-            for c in g.names:
-                stacked.append(self.branches[c].history(g.states[c], flat).reshape(g.q.shape))
-            self._free.append(np.matmul(g.operator, np.concatenate(stacked, axis=1)))
+            size, flat = g.size, g.q.ravel()
+            g.stacked[:, :size] = inertia * ahead - a.alpha_m * g.acceleration + a.alpha_f * g.unbalance
+            for b, c in enumerate(g.names, start=1):
+                g.stacked[:, b * size : (b + 1) * size] = self.branches[c].history(g.states[c], flat).reshape(g.q.shape)
+            self._free.append(np.matmul(g.operator, g.stacked))
         return self.vertical(self._contact_values(self._free))
 
     def advance(self, forces: np.ndarray) -> float:
@@ -339,7 +340,7 @@ class HarmonicStepper:
             )
             old, new = g.q.ravel(), q_new.ravel()
             for c in g.names:
-                g.states[c] = self.branches[c].update(g.states[c], old, new)
+                self.branches[c].update_in_place(g.states[c], old, new)
             g.q, g.acceleration = q_new, acceleration
             if 1 in g.n:  # the inertia at t_{n+1} is the unbalance (the scheme's acceleration lags it)
                 hub -= float(g.momentum @ g.unbalance[int(np.nonzero(g.n == 1)[0][0]), :, 0])

@@ -31,3 +31,18 @@ def test_compound_table_reports_the_storage_rise():
     expected = laws["tread"].storage(w250) / laws["tread"].storage(w1) - 1
     assert table.loc["tread", "storage rise 1->250 Hz"] == pytest.approx(expected)
     assert (table.filter(like="loss factor") > 0).all().all()
+
+
+def test_prony_states_updated_in_place_as_by_the_formula():
+    """The in-place update (BLAS axpy on each row) equals the closed formula and refuses arrays it cannot write."""
+    from roadnoise_utils.tire.rubber import PronyBranches, prony_series
+
+    branches = PronyBranches(prony_series(ru.tire.FractionalZener(3.0, 1.0e-3, 0.3)), 1.0e-4)
+    rng = np.random.default_rng(0)
+    states = rng.normal(size=(branches.weights.size, 50))
+    old, new = rng.normal(size=50), rng.normal(size=50)
+    expected = branches.update(states, old, new)
+    branches.update_in_place(states, old, new)
+    assert np.abs(states - expected).max() < 1e-14
+    with pytest.raises(ValueError, match="C-contiguous"):
+        branches.update_in_place(np.asfortranarray(states), old, new)
