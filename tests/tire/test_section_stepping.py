@@ -112,6 +112,22 @@ def test_effective_compliance_is_symmetric_positive_definite(stepper_and_static)
     assert np.linalg.eigvalsh(block).min() > 0
 
 
+def test_step_compliance_is_the_harmonic_path_of_a_load(stepper_and_static):
+    """The grid's step compliance (harmonic sums of C A^-1 C^T) equals loading every harmonic with
+    the spread forces and summing the motion back: the contact solve and the stepping agree."""
+    stepper, static = stepper_and_static
+    grid = static.grid
+    forces = np.zeros((grid.n_cols, grid.n_rows))
+    forces[10:15, 30:40] = np.random.default_rng(0).uniform(0.0, 5.0, (5, 10))
+    loads, values, start = stepper.loads(forces), [], 0
+    for group in stepper.groups:
+        part = loads[start : start + group.n.size]
+        start += group.n.size
+        values.append(np.matmul(group.contact, np.matmul(group.load, part)))
+    motion = stepper.vertical(np.concatenate(values)).ravel()
+    assert np.abs(motion - stepper.effective_compliance() @ forces.ravel()).max() < 1e-12 * np.abs(motion).max()
+
+
 def test_bad_input_is_refused(stepper_and_static):
     tire = section_stages.section_tire(TIRE)
     with pytest.raises(ValueError, match="dt"):
