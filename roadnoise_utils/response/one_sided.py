@@ -147,9 +147,8 @@ def contact_spacing(fet: FETModel) -> float:
     return fet.mesh.arc_length * fet.spec.geometry.outer_radius / fet.spec.geometry.belt_radius
 
 
-def check_travel_step(fet: FETModel, speed: float, dt: float) -> None:
-    """Refuse a time step in which the road moves more than half the contact-point spacing."""
-    spacing = contact_spacing(fet)
+def check_travel_step(spacing: float, speed: float, dt: float) -> None:
+    """Refuse a time step in which the road moves more than half the contact-point ``spacing`` (m)."""
     travel = speed * dt
     if travel > MAX_TRAVEL_PER_STEP * spacing:
         raise ValueError(
@@ -157,6 +156,22 @@ def check_travel_step(fet: FETModel, speed: float, dt: float) -> None:
             f"{spacing * 1e3:.1f} mm apart: valid range is dt <= {MAX_TRAVEL_PER_STEP * spacing / speed:.3g} s "
             "(a step too coarse for the contact)"
         )
+
+
+def time_steps(
+    spacing: float, speed: float, distance: tuple[float, float], dt: float | None
+) -> tuple[float, np.ndarray]:
+    """The time step (s) and the travel at each step (m) of a dynamic run, checked before any work.
+
+    ``dt`` defaults to :data:`DT_MAX`, or less so that the road moves at most a quarter of the
+    contact-point ``spacing`` (m) per step; shared by the runs of both tire models.
+    """
+    d0, d1 = guards.interval("distance", distance)
+    dt = min(DT_MAX, 0.25 * spacing / speed) if dt is None else guards.real("dt", dt, 0.0, 0.01, lo_open=True, unit="s")
+    check_travel_step(spacing, speed, dt)
+    n_steps = int(np.floor((d1 - d0) / (speed * dt))) + 1
+    check_steps(n_steps, speed, (d0, d1), dt)
+    return dt, d0 + speed * dt * np.arange(n_steps)
 
 
 def check_steps(n_steps: int, speed: float, distance: tuple[float, float], dt: float) -> None:
@@ -262,14 +277,8 @@ def dynamic_run(
     check_same_tire(fet, static)
     speed = guards.real("speed", speed, 0.0, 100.0, lo_open=True, unit="m/s")
     margin = guards.real("margin", margin, 0.0, 0.5, lo_open=True, unit="m")
-    d0, d1 = guards.interval("distance", distance)
-    spacing = contact_spacing(fet)
-    dt = min(DT_MAX, 0.25 * spacing / speed) if dt is None else guards.real("dt", dt, 0.0, 0.01, lo_open=True, unit="s")
-    check_travel_step(fet, speed, dt)
-    n_steps = int(np.floor((d1 - d0) / (speed * dt))) + 1
-    check_steps(n_steps, speed, (d0, d1), dt)
+    dt, travel = time_steps(contact_spacing(fet), speed, distance, dt)
     model = _DynamicModel(fet, static, dt, margin)
-    travel = d0 + speed * dt * np.arange(n_steps)
     heights = point_heights(model.x, model.dx_minus, model.dx_plus, profile, travel)
     with threadpool_limits(1, user_api="blas"):  # small dense solves: threads only fight over the cores
         return model.run(travel, heights, speed, frozen)

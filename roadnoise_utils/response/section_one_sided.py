@@ -35,7 +35,7 @@ from ..tire.active_set import held_contact
 from ..tire.section_contact import extended_grid, harmonic_flexibility, vertical_compliance
 from ..tire.section_static import SectionStaticState, SectionTire, check_contact_memory
 from ..tire.section_stepping import HarmonicStepper, check_static_start
-from .one_sided import DT_MAX, MAX_TRAVEL_PER_STEP, ContactRun, check_steps
+from .one_sided import ContactRun, time_steps
 
 #: The cleat runs' contact grid reaches this far ahead of and behind the axle (m along the tread): a
 #: 15 mm cleat on the 1.25 m drum meets the 165/65 R14 about 105 mm ahead, beyond the static grid.
@@ -152,25 +152,16 @@ def section_dynamic_run(
     """Dynamic passage of a road ``profile`` at ``speed`` (m/s), hub fixed, one-sided (or frozen) contact.
 
     The tire's dynamics at the contact grid come from :class:`.tire.section_stepping.HarmonicStepper`
-    (every harmonic, Newmark, Prony moduli); each step solves the contact on the step's
+    (every harmonic, generalised-alpha, Prony moduli); each step solves the contact on the step's
     compliance of the grid as the quasi-static run does, starting from the static state at rest.
     ``frozen`` keeps every static contact point bilateral (no lift-off, no new contact): the
     linear model, to compare with the frequency domain. ``reduced``: the harmonics of
     :func:`.tire.section_stepping.reduce_all` when already built.
     """
     speed = guards.real("speed", speed, 0.0, 100.0, lo_open=True, unit="m/s")
-    d0, d1 = guards.interval("distance", distance)
     _check_tire(tire, static)
-    spacing = tire.spec.mesh.contact_spacing
-    dt = min(DT_MAX, 0.25 * spacing / speed) if dt is None else guards.real("dt", dt, 0.0, 0.01, lo_open=True, unit="s")
-    if speed * dt > MAX_TRAVEL_PER_STEP * spacing:
-        raise ValueError(
-            f"dt = {dt:g} s moves the road {speed * dt * 1e3:.2f} mm per step at {speed:g} m/s, against contact points "
-            f"{spacing * 1e3:.1f} mm apart: valid range is dt <= {MAX_TRAVEL_PER_STEP * spacing / speed:.3g} s"
-        )
-    n_steps = int(np.floor((d1 - d0) / (speed * dt))) + 1
-    check_steps(n_steps, speed, (d0, d1), dt)
-    travel = d0 + speed * dt * np.arange(n_steps)
+    dt, travel = time_steps(tire.spec.mesh.contact_spacing, speed, distance, dt)
+    n_steps = travel.size
     setup = _CleatSetup(tire, static, profile, travel)
     grid, base, heights = setup.grid, setup.base, setup.heights
     stepper = HarmonicStepper(tire, dt, reduced, grid=grid)
