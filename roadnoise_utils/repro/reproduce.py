@@ -138,6 +138,7 @@ def execute_notebook(path: Path, timeout: int = CELL_TIMEOUT, retries: int = 1) 
             kernel_name="python3",
             resources={"metadata": {"path": str(path.parent)}},
             shutdown_kernel="immediate",  # a graceful shutdown interrupts the kernel and logs a KeyboardInterrupt
+            coalesce_streams=True,  # one stream output per cell and stream, as a notebook front end shows it
         )
         try:
             client.execute(env=env)

@@ -21,7 +21,7 @@ drum through one-sided tread springs:
   updated exactly for a displacement linear over the step. So the time-domain model is the
   *same* viscoelastic model as the frequency-domain FETvisco (to the Prony fit error, < 0.1 %
   over 1-1000 Hz, < 0.4 % down to 0.1 Hz), not a modal damping identified at one frequency; a lifted tread element
-  relaxes through its own branches. Each step costs one banded solve and a small dense
+  relaxes through its own branches. Each step costs two banded solves and a small dense
   active-set solve on the tread points near the footprint (the dynamic compliance
   :math:`G = E^T K_{eff}^{-1} E` is factorised once).
 
@@ -35,12 +35,12 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.linalg as sla
-import scipy.sparse.linalg as spla
 from threadpoolctl import threadpool_limits
 
 from .. import guards
 from ..road.cleat import point_heights
 from ..tire.active_set import held_contact
+from ..tire.banded import BandedCholesky
 from ..tire.ring_model import UZ, FETModel
 from ..tire.rubber import PronyBranches, prony_series
 from ..tire.static import StaticState, check_same_tire, contact_problem
@@ -305,7 +305,7 @@ class _DynamicModel:
         k_eff = (4.0 / dt**2) * self.M + self.K_elastic
         for name, k in self.K_parts.items():
             k_eff = k_eff + self.branches[name].factor * k
-        self.lu = spla.splu(k_eff.tocsc(), permc_spec="NATURAL")
+        self.lu = BandedCholesky(k_eff)
         strip, node = _candidates(fet, static, margin)
         guards.check_memory(
             8.0 * (strip.size**2 + free.size * COLUMN_BATCH),

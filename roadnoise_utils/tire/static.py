@@ -23,10 +23,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import pandas as pd
-import scipy.sparse.linalg as spla
 
 from .. import guards
 from .active_set import active_set
+from .banded import BandedCholesky
 from .ring_model import UZ, FETModel
 from .spec import Operating, TireSpec, to_dict
 from .tasselli import FootprintMeasures, Tasselli, tassellate
@@ -133,7 +133,7 @@ class ContactProblem:
     stiffness_tread: np.ndarray  # k_n of candidates (N/m)
     gap0: np.ndarray  # tread point height above the road top before loading, at zero rise (m)
     road_height0: np.ndarray  # road height under each candidate before loading (m)
-    lu: object  # sparse LU of K on the free DOF
+    lu: BandedCholesky  # factor of K on the free DOF
     _columns: np.ndarray = field(init=False, repr=False)  # C[:, j] once computed (m/N)
     _known: np.ndarray = field(init=False, repr=False)
 
@@ -184,7 +184,7 @@ def contact_problem(fet: FETModel, road: RoadSurface) -> ContactProblem:
     check_contact_memory(fet.n_dof, strip.size, mesh.n_strips)
     free = np.setdiff1d(np.arange(fet.n_dof), mesh.hub_dofs)
     k_static = fet.K(0.0, storage_only=True)[free][:, free].tocsc()
-    lu = spla.splu(k_static, permc_spec="NATURAL")  # circumference-major numbering: banded
+    lu = BandedCholesky(k_static)
     candidates = strip * mesh.n_elements + node
     tx, tz = mesh.tread_xz()
     top = tz.min()
