@@ -135,7 +135,10 @@ def contact_receptance(tire: SectionTire, static: SectionStaticState, frequency:
     th = grid.theta[row]
     offset_index = row[:, None] - row[None, :] + grid.n_rows - 1
     projection = _Projection(col, th, col, th, offset_index, offset_index, grid.n_cols)
-    return projection.block(sums, projection.direct, projection.weights[0])
+    c = grid.n_cols
+    blocks = np.stack([sums[:, :c, :c], sums[:, c:, c:], sums[:, :c, c:], sums[:, c:, :c]], axis=1)
+    table = _gather_table(blocks.view(float).reshape(blocks.shape + (2,)))
+    return projection.block(table, projection.direct, projection.weights[0])
 
 
 def dynamic_harmonics(tire: SectionTire, f_max: float, cutoff: float) -> int:
@@ -203,21 +206,35 @@ def _trig(n: np.ndarray, offsets: np.ndarray, dtheta: float, basis: np.ndarray |
     return cos, sin
 
 
-def _angular(flat: np.ndarray, cos: np.ndarray, sin: np.ndarray, c: int) -> np.ndarray:
-    """Harmonic sums of receptances ``flat`` (n_n, ..., 4 c^2) at the offsets of ``cos, sin``: (..., n_off, 2c, 2c).
+def _blocks_by_sum(receptance: np.ndarray, c: int) -> np.ndarray:
+    """A harmonic's receptances (b, 2c, 2c) as its blocks in summation order (b, 4, c, c).
 
-    ``cos`` sums for the ``rr`` and ``tt`` blocks, ``sin`` sums for ``rt`` (negated) and ``tr``
-    (:mod:`.tire.section_contact`).
+    ``rr`` and ``tt`` (summed with ``cos``), then ``-rt`` and ``tr`` (summed with ``sin``), as
+    :func:`.tire.section_contact.angular_sums` sums them.
     """
-    blocks = flat.reshape(flat.shape[:-1] + (2, c, 2, c))
-    diagonal = np.stack([blocks[..., 0, :, 0, :], blocks[..., 1, :, 1, :]], axis=-3)
-    mixed = np.stack([-blocks[..., 0, :, 1, :], blocks[..., 1, :, 0, :]], axis=-3)
-    even = np.moveaxis(np.tensordot(cos, diagonal, axes=(1, 0)), 0, -4)  # (..., n_off, 2, c, c)
-    odd = np.moveaxis(np.tensordot(sin, mixed, axes=(1, 0)), 0, -4)
-    out = np.empty(even.shape[:-3] + (2 * c, 2 * c), complex)
-    out[..., :c, :c], out[..., c:, c:] = even[..., 0, :, :], even[..., 1, :, :]
-    out[..., :c, c:], out[..., c:, :c] = odd[..., 0, :, :], odd[..., 1, :, :]
+    out = np.empty((receptance.shape[0], 4, c, c), receptance.dtype)
+    out[:, 0], out[:, 1] = receptance[:, :c, :c], receptance[:, c:, c:]
+    out[:, 2], out[:, 3] = -receptance[:, :c, c:], receptance[:, c:, :c]
     return out
+
+
+def _angular(blocks: np.ndarray, cos: np.ndarray, sin: np.ndarray) -> np.ndarray:
+    """Harmonic sums of one frequency's receptance blocks (n_n, 4, c, c) (:func:`_blocks_by_sum`) as a gather table.
+
+    Returns (n_off c c, 8) real: for each (offset, column, column) the real and imaginary parts
+    of ``rr, tt, rt, tr`` (:func:`_gather_table`). The weights are real, so each sum is one real
+    product over the real and imaginary parts together (half the work of a complex one).
+    """
+    n_n, _, c, _ = blocks.shape
+    values = blocks.view(float).reshape(n_n, 2, -1)  # (n_n, [rr tt | rt tr], 2 c c complex as floats)
+    even = (cos @ values[:, 0]).reshape(-1, 2, c, c, 2)
+    odd = (sin @ values[:, 1]).reshape(-1, 2, c, c, 2)
+    return _gather_table(np.concatenate([even, odd], axis=1))
+
+
+def _gather_table(sums: np.ndarray) -> np.ndarray:
+    """Sums (n_off, 4, c, c, 2) (blocks ``rr, tt, rt, tr``; real and imaginary parts) as (n_off c c, 8)."""
+    return np.ascontiguousarray(np.moveaxis(sums, 1, 3)).reshape(-1, 8)
 
 
 def _mirror_pairs(static: SectionStaticState) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -322,10 +339,10 @@ class EvenFootprint:
         laws = ops.laws if laws is None else laws
         c = self.tire.grid.n_cols
         paired = self.partner >= 0
-        flat = np.empty((self.cos.shape[1], BLOCK, 4 * c * c), complex)
+        blocks = np.empty((BLOCK, self.cos.shape[1], 4, c, c), complex)
 
         def fill(k: int, block: np.ndarray) -> None:
-            flat[k, : block.size] = self.harmonics[k].receptance(laws, block, inertia).reshape(block.size, -1)
+            blocks[: block.size, k] = _blocks_by_sum(self.harmonics[k].receptance(laws, block, inertia), c)
 
         # LAPACK releases the GIL: two harmonics at a time
         with ThreadPoolExecutor(max_workers=2) as workers:
@@ -334,9 +351,9 @@ class EvenFootprint:
                 block = np.asarray(omegas[part], float)
                 with threadpool_limits(1):
                     list(workers.map(fill, range(len(self.harmonics)), repeat(block)))
-                sums = _angular(flat[:, : block.size], self.cos, self.sin, c)
                 # an even displacement field: h(j, -a) = h(j, a); the mirrored column adds to its partner
-                yield part, np.stack([self.projection.even(s, paired) for s in sums])
+                tables = (_angular(at_frequency, self.cos, self.sin) for at_frequency in blocks[: block.size])
+                yield part, np.stack([self.projection.even(table, paired) for table in tables])
 
     def footprint(
         self, freqs: np.ndarray, laws: dict | None = None, inertia: bool = True, progress: bool = False
@@ -401,33 +418,35 @@ class _Projection:
     """Vertical receptance of the contact points from the (r, theta) angular sums.
 
     ``u_z = -cos(a) u_r + sin(a) u_t`` and a vertical force ``F`` loads ``f_r = -cos(b) F``,
-    ``f_t = sin(b) F``. The trigonometric weights do not depend on frequency: built once.
+    ``f_t = sin(b) F``. The trigonometric weights and the positions of each point pair in the
+    sums' gather table (offset, column, column; :func:`_gather_table`) do not depend on
+    frequency: built once.
     """
 
     def __init__(self, col, theta, mirror_col, mirror_theta, direct, mirrored, c):
         self.c = c
-        self.direct = (direct, col[:, None], col[None, :])
-        self.mirrored = (mirrored, col[:, None], mirror_col[None, :])
+        self.direct = (direct * c + col[:, None]) * c + col[None, :]
+        self.mirrored = (mirrored * c + col[:, None]) * c + mirror_col[None, :]
         self.weights = [self._weights(theta, theta), self._weights(theta, mirror_theta)]
 
     @staticmethod
     def _weights(theta_a, theta_b):
         ca, sa, cb, sb = np.cos(theta_a), np.sin(theta_a), np.cos(theta_b), np.sin(theta_b)
-        return np.outer(ca, cb), -np.outer(ca, sb), -np.outer(sa, cb), np.outer(sa, sb)
+        # blocks rr, tt, rt, tr (the gather table's order)
+        return np.stack([np.outer(ca, cb), np.outer(sa, sb), -np.outer(ca, sb), -np.outer(sa, cb)], axis=-1)
 
-    def block(self, sums, pick, weights):
-        """The vertical receptance of the point pairs ``pick`` with the trigonometric ``weights``."""
-        c = self.c
-        out = weights[0] * sums[:, :c, :c][pick]
-        out += weights[1] * sums[:, :c, c:][pick]
-        out += weights[2] * sums[:, c:, :c][pick]
-        out += weights[3] * sums[:, c:, c:][pick]
-        return out
+    @staticmethod
+    def block(table: np.ndarray, pick: np.ndarray, weights: np.ndarray) -> np.ndarray:
+        """The vertical receptance of the point pairs at positions ``pick`` of ``table`` (n, 8), ``weights`` (.., 4)."""
+        gathered = np.take(table, pick, axis=0).reshape(pick.shape + (4, 2))
+        real = np.einsum("abk,abk->ab", gathered[..., 0], weights)
+        imag = np.einsum("abk,abk->ab", gathered[..., 1], weights)
+        return real + 1j * imag
 
-    def even(self, sums: np.ndarray, paired: np.ndarray) -> np.ndarray:
+    def even(self, table: np.ndarray, paired: np.ndarray) -> np.ndarray:
         """Receptance of an even (fore-aft symmetric) field on the points with theta >= 0."""
-        comp = self.block(sums, self.direct, self.weights[0])
-        comp[:, paired] += self.block(sums, self.mirrored, self.weights[1])
+        comp = self.block(table, self.direct, self.weights[0])
+        comp[:, paired] += self.block(table, self.mirrored, self.weights[1])
         return comp
 
 

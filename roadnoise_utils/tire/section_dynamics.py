@@ -25,6 +25,7 @@ carries a vertical hub force (:func:`rim_vector`).
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from functools import cached_property
 
 import numpy as np
 import scipy.linalg as sla
@@ -55,7 +56,8 @@ class Projected:
             matrices.append(self.mass)
         k = self.gas.shape[0]
         stacked = np.stack(matrices).reshape(len(matrices), k * k)
-        return (np.stack(factors, axis=1).astype(complex) @ stacked).reshape(omegas.size, k, k)
+        weights = np.stack(factors, axis=1).astype(complex)  # real matrices: real and imaginary parts apart
+        return (weights.real @ stacked + 1j * (weights.imag @ stacked)).reshape(omegas.size, k, k)
 
 
 @dataclass(frozen=True, eq=False)
@@ -66,12 +68,37 @@ class ReducedHarmonic:
     projected: Projected
     n_modes: int
 
+    @cached_property
+    def _condensed(self) -> tuple[Projected, np.ndarray]:
+        """The basis rotated so that only its first ``d`` coordinates move the contact DOF: (matrices, ``R``).
+
+        With ``C = Q [R; 0]`` (complete QR of the contact values, ``Q`` orthogonal), the
+        matrices on the basis ``Q`` and ``R`` (d, d) give the same receptance (Galerkin).
+        """
+        p = self.projected
+        d = p.contact.shape[1]
+        q, r = np.linalg.qr(p.contact, mode="complete")
+        compounds = {name: q.T @ matrix @ q for name, matrix in p.compounds.items()}
+        rotated = Projected(compounds, q.T @ p.gas @ q, q.T @ p.mass @ q, r, q.T @ p.momentum)
+        return rotated, r[:d]
+
     def receptance(self, laws: dict, omegas: np.ndarray, inertia: bool = True) -> np.ndarray:
-        """:math:`F_n(\\omega)` at the contact DOF (m/N), (n_omega, d, d) complex; quasi-static without ``inertia``."""
-        d = self.projected.dynamic_stiffness(laws, omegas, inertia)
-        c = self.projected.contact.astype(complex)
-        x = np.linalg.solve(d, np.broadcast_to(c, (d.shape[0],) + c.shape))
-        return np.matmul(c.T, x)
+        """:math:`F_n(\\omega)` at the contact DOF (m/N), (n_omega, d, d) complex; quasi-static without ``inertia``.
+
+        On the rotated basis (:attr:`_condensed`) the contact values are ``[R; 0]``, so
+        :math:`F = R^T S^{-1} R` with :math:`S = D_{11} - D_{12} D_{22}^{-1} D_{21}` the dynamic
+        stiffness condensed on the first ``d`` coordinates: a third of the work of solving the
+        whole basis for the ``d`` contact loads.
+        """
+        rotated, r = self._condensed
+        d = r.shape[0]
+        stiffness = rotated.dynamic_stiffness(laws, omegas, inertia)
+        condensed = stiffness[:, :d, :d]
+        if stiffness.shape[1] > d:
+            inner = np.linalg.solve(stiffness[:, d:, d:], stiffness[:, d:, :d])
+            condensed = condensed - np.matmul(stiffness[:, :d, d:], inner)
+        x = np.linalg.solve(condensed, np.broadcast_to(r.astype(complex), (stiffness.shape[0], d, d)))
+        return np.matmul(r.T, x)
 
 
 def _free_positions(ops: HarmonicOperators, dofs: np.ndarray) -> np.ndarray:
