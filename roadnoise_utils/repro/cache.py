@@ -83,6 +83,12 @@ def _module_file(name: str, package_dir: Path) -> Path | None:
 
 def _imports(name: str, path: Path, package_dir: Path) -> set[str]:
     """Package modules imported anywhere in a module (top level or inside functions)."""
+    stat = path.stat()  # parsed once per version of the file: every stage's fingerprint walks the same modules
+    return set(_parsed_imports(name, path, package_dir, stat.st_mtime_ns, stat.st_size))
+
+
+@functools.cache
+def _parsed_imports(name: str, path: Path, package_dir: Path, mtime_ns: int, size: int) -> frozenset[str]:
     package = name if path.name == "__init__.py" else name.rpartition(".")[0]
     found = set()
     for node in ast.walk(ast.parse(path.read_text(), str(path))):
@@ -99,7 +105,7 @@ def _imports(name: str, path: Path, package_dir: Path) -> set[str]:
             for alias in node.names:  # "from .x import y": y may be a module of its own
                 sub = f"{module}.{alias.name}"
                 found.add(sub if _module_file(sub, package_dir) else module)
-    return found
+    return frozenset(found)
 
 
 def module_closure(modules: Iterable[str], package_dir: Path = PACKAGE_DIR) -> list[str]:

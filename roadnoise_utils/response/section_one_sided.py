@@ -158,14 +158,37 @@ def section_dynamic_run(
     linear model, to compare with the frequency domain. ``reduced``: the harmonics of
     :func:`.tire.section_stepping.reduce_all` when already built.
     """
+    return section_dynamic_runs(tire, static, profile, speed, distance, dt, (frozen,), reduced)[0]
+
+
+def section_dynamic_runs(
+    tire: SectionTire,
+    static: SectionStaticState,
+    profile,
+    speed: float,
+    distance: tuple[float, float],
+    dt: float | None = None,
+    frozen: tuple[bool, ...] = (False, True),
+    reduced: list | None = None,
+) -> list[ContactRun]:
+    """The passage of :func:`section_dynamic_run` with one run per entry of ``frozen``, stepped together.
+
+    The runs share one :class:`.tire.section_stepping.HarmonicStepper` of several runs: most of
+    a step is reading the harmonics' operators, once for all runs, so the one-sided run and its
+    frozen check together cost little more than one of them. Each run is the run
+    :func:`section_dynamic_run` gives alone (the runs' arithmetic is independent).
+    """
     speed = guards.real("speed", speed, 0.0, 100.0, lo_open=True, unit="m/s")
     _check_tire(tire, static)
+    if not frozen or not all(isinstance(f, bool | np.bool_) for f in frozen):
+        raise ValueError(f"frozen = {frozen!r}: give one or more booleans, one per run")
     dt, travel = time_steps(tire.spec.mesh.contact_spacing, speed, distance, dt)
-    n_steps = travel.size
+    n_steps, runs = travel.size, len(frozen)
     setup = _CleatSetup(tire, static, profile, travel)
     grid, base, heights = setup.grid, setup.base, setup.heights
-    stepper = HarmonicStepper(tire, dt, reduced, grid=grid)
-    start = stepper.start(setup.forces).ravel()
+    shape = (runs, grid.n_cols, grid.n_rows)
+    stepper = HarmonicStepper(tire, dt, reduced, grid=grid, runs=runs)
+    start = np.reshape(stepper.start(np.broadcast_to(setup.forces, shape)), (runs, -1))[0]
     check_static_start(static, start[setup.contact], base[setup.contact])
     touching = base + heights[:, 0] - start > 1e-9
     if np.any(touching & ~setup.contact) or np.any(heights[setup.contact, 0] != 0):
@@ -176,39 +199,45 @@ def section_dynamic_run(
     # points that can reach the road: within NEAR_MARGIN of it at the highest the profile puts them
     near = np.nonzero(base + heights.max(axis=1) > -NEAR_MARGIN)[0]
     compliance = stepper.effective_compliance()[np.ix_(near, near)]
-    solver = _StepContact(compliance, setup.contact[near], frozen)
-    hub = np.zeros(n_steps)
-    points = np.zeros(n_steps, int)
-    on_profile = np.zeros(n_steps, bool)
-    hub[0], points[0] = static.load, int(setup.contact.sum())
-    worst, most = 0.0, 0
-    forces = np.zeros(base.size)
+    solvers = [_StepContact(compliance, setup.contact[near], bool(f)) for f in frozen]
+    hub = np.zeros((runs, n_steps))
+    points = np.zeros((runs, n_steps), int)
+    on_profile = np.zeros((runs, n_steps), bool)
+    hub[:, 0], points[:, 0] = static.load, int(setup.contact.sum())
+    worst, most = np.zeros(runs), np.zeros(runs, int)
+    forces = np.zeros((runs, base.size))
     with threadpool_limits(1, user_api="blas"):  # small products: threads only fight over the cores
         for k in range(1, n_steps):
-            free = stepper.predict().ravel()
-            forces[near], iterations = solver.solve(base[near] + heights[near, k] - free[near])
-            hub[k] = stepper.advance(forces.reshape(grid.n_cols, grid.n_rows))
-            active = near[solver.active]
-            points[k] = active.size
-            on_profile[k] = bool(np.any(heights[active, k] > 0))
-            setup.check_edge(active, travel[k])
-            if not frozen:  # every grid point, from the step's own displacement (not the step's compliance)
-                gap = base + heights[:, k] - stepper.displacement().ravel()
-                gap[active] = 0.0
-                worst = max(worst, float(gap.max()))
-            most = max(most, iterations)
-    return ContactRun(
-        distance=travel,
-        t=dt * np.arange(n_steps),
-        hub_force=hub - static.load,
-        contact_points=points,
-        on_profile=on_profile,
-        speed=speed,
-        contact="frozen" if frozen else "one-sided",
-        max_penetration=max(worst, 0.0),
-        force_balance=float("nan"),
-        iterations=most,
-    )
+            free = np.reshape(stepper.predict(), (runs, -1))
+            for r, solver in enumerate(solvers):
+                forces[r, near], iterations = solver.solve(base[near] + heights[near, k] - free[r, near])
+                most[r] = max(most[r], iterations)
+            hub[:, k] = stepper.advance(forces.reshape(shape))
+            moved = None if all(frozen) else np.reshape(stepper.displacement(), (runs, -1))
+            for r, solver in enumerate(solvers):
+                active = near[solver.active]
+                points[r, k] = active.size
+                on_profile[r, k] = bool(np.any(heights[active, k] > 0))
+                setup.check_edge(active, travel[k])
+                if not solver.frozen:  # every grid point, from the step's own displacement (not the step's compliance)
+                    gap = base + heights[:, k] - moved[r]
+                    gap[active] = 0.0
+                    worst[r] = max(worst[r], float(gap.max()))
+    return [
+        ContactRun(
+            distance=travel,
+            t=dt * np.arange(n_steps),
+            hub_force=hub[r] - static.load,
+            contact_points=points[r],
+            on_profile=on_profile[r],
+            speed=speed,
+            contact="frozen" if frozen[r] else "one-sided",
+            max_penetration=max(float(worst[r]), 0.0),
+            force_balance=float("nan"),
+            iterations=int(most[r]),
+        )
+        for r in range(runs)
+    ]
 
 
 class _StepContact:

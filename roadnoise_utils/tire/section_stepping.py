@@ -162,7 +162,9 @@ class GeneralizedAlpha:
 class _Group:
     """Harmonics of one basis size, padded to it, mass-orthonormal: operators and states (sets along the last axis)."""
 
-    def __init__(self, harmonics: list[SteppedHarmonic], dt: float, branches: dict[str, PronyBranches], scheme):
+    def __init__(
+        self, harmonics: list[SteppedHarmonic], dt: float, branches: dict[str, PronyBranches], scheme, runs: int = 1
+    ):
         self.n = np.array([h.n for h in harmonics])
         size = max(h.projected.gas.shape[0] for h in harmonics)
         d = harmonics[0].projected.contact.shape[1]
@@ -192,19 +194,19 @@ class _Group:
             if h.n == 1:
                 self.momentum[:k] = p.momentum
         self.size, self.names = size, names
-        self.q = np.zeros((h_count, size, 2))
+        self.q = np.zeros((h_count, size, 2 * runs))  # sets of run r at 2 r (symmetric) and 2 r + 1
         self.velocity = np.zeros_like(self.q)
         self.acceleration = np.zeros_like(self.q)
         self.unbalance = np.zeros_like(self.q)  # external minus internal force (M = I: the inertia force)
         self.states = {c: np.zeros((branches[c].weights.size, self.q.size)) for c in names}
-        self.stacked = np.zeros((h_count, self.operator.shape[2], 2))  # the products' right-hand side
+        self.stacked = np.zeros((h_count, self.operator.shape[2], 2 * runs))  # the products' right-hand side
 
     def flexibility(self) -> np.ndarray:
         """:math:`(1 - \\alpha_f) C A^{-1} C^T` per harmonic (h, d, d): the step's compliance at the contact DOF."""
         return np.matmul(self.contact, self.load)
 
     def start(self, loads: np.ndarray) -> None:
-        """At rest under the static contact ``loads`` (h, d, 2), every Maxwell branch relaxed."""
+        """At rest under the static contact ``loads`` (h, d, 2 runs), every Maxwell branch relaxed."""
         self.q = np.matmul(self.static, np.matmul(np.transpose(self.contact, (0, 2, 1)), loads))
         for array in (self.velocity, self.acceleration, self.unbalance):
             array[:] = 0.0
@@ -228,6 +230,11 @@ class HarmonicStepper:
         The tire's grid with more rows (:func:`.section_contact.extended_grid`); default the tire's.
     spectral_radius : float
         Of the generalised-alpha scheme at infinite frequency (:class:`GeneralizedAlpha`).
+    runs : int
+        Independent runs stepped together (each with its own contact forces). The step's cost is
+        mostly reading the harmonics' operators, once per step for all runs: two runs cost
+        little more than one. With ``runs > 1`` forces, displacements and hub forces carry a
+        leading axis of runs.
     """
 
     def __init__(
@@ -238,8 +245,10 @@ class HarmonicStepper:
         f_max: float = 400.0,
         grid: ContactGrid | None = None,
         spectral_radius: float = SPECTRAL_RADIUS,
+        runs: int = 1,
     ):
         self.dt = guards.real("dt", dt, 0.0, 0.01, lo_open=True, unit="s")
+        self.runs = guards.integer("runs", runs, 1, 16)
         grid = tire.grid if grid is None else grid
         n_all = tire.harmonics + 1
         guards.check_memory(8.0 * n_all * 160**2 * 8, f"the Newmark operators of {n_all} harmonics", "[mesh] harmonics")
@@ -251,7 +260,7 @@ class HarmonicStepper:
         first_static = next((i for i, h in enumerate(reduced) if i >= 2 and h.n_modes == 0), n_all)
         parts = [reduced[:first_static], reduced[first_static:]]
         self.scheme = GeneralizedAlpha(guards.real("spectral_radius", spectral_radius, 0.0, 1.0))
-        self.groups = [_Group(part, self.dt, self.branches, self.scheme) for part in parts if part]
+        self.groups = [_Group(part, self.dt, self.branches, self.scheme, self.runs) for part in parts if part]
         self.grid = grid
         c = grid.n_cols
         n = np.arange(n_all)
@@ -278,23 +287,41 @@ class HarmonicStepper:
         flex = np.concatenate([g.flexibility() for g in self.groups])
         return vertical_compliance(self.grid, 0.5 * (flex + np.transpose(flex, (0, 2, 1))))
 
+    def _per_run(self, values: np.ndarray) -> np.ndarray:
+        """Grid values (n_cols, n_rows), or (runs, n_cols, n_rows) with several runs, as (runs, n_cols, n_rows)."""
+        shape = (self.runs, self.columns, self.cos.shape[0])
+        values = np.asarray(values, float)
+        allowed = [shape, shape[1:]] if self.runs == 1 else [shape]
+        if values.shape not in allowed:
+            raise ValueError(f"grid values must have the shape {allowed[-1]}, got {values.shape}")
+        return values.reshape(shape)
+
+    def _as_given(self, values: np.ndarray) -> np.ndarray:
+        return values[0] if self.runs == 1 else values
+
     def loads(self, forces: np.ndarray) -> np.ndarray:
-        """Generalised loads (harmonics, 2 c, 2 sets) of upward point forces (n_cols, n_rows) (N)."""
-        c = self.columns
-        radial, tangential = forces * self.down, forces * self.along  # (c, rows)
-        out = np.empty((self.cos.shape[1], 2 * c, 2))
-        out[:, :c, 0] = self.cos.T @ radial.T
-        out[:, :c, 1] = self.sin.T @ radial.T
-        out[:, c:, 0] = self.sin.T @ tangential.T
-        out[:, c:, 1] = -(self.cos.T @ tangential.T)
-        return out
+        """Generalised loads (harmonics, 2 c, 2 runs) of upward point forces (n_cols, n_rows) (N), per run."""
+        c, runs = self.columns, self.runs
+        forces = self._per_run(forces)
+        radial, tangential = forces * self.down, forces * self.along  # (runs, c, rows)
+        out = np.empty((self.cos.shape[1], 2 * c, runs, 2))
+        order = (2, 1, 0)  # (runs, c, harmonics) -> (harmonics, c, runs)
+        out[:, :c, :, 0] = np.transpose(radial @ self.cos, order)
+        out[:, :c, :, 1] = np.transpose(radial @ self.sin, order)
+        out[:, c:, :, 0] = np.transpose(tangential @ self.sin, order)
+        out[:, c:, :, 1] = -np.transpose(tangential @ self.cos, order)
+        return out.reshape(self.cos.shape[1], 2 * c, 2 * runs)
 
     def vertical(self, values: np.ndarray) -> np.ndarray:
-        """Upward displacement of every grid point (n_cols, n_rows) (m) from contact-DOF values (harmonics, 2 c, 2)."""
-        c = self.columns
-        radial = self.cos @ values[:, :c, 0] + self.sin @ values[:, :c, 1]  # (rows, c)
-        tangential = self.sin @ values[:, c:, 0] - self.cos @ values[:, c:, 1]
-        return (self.down[:, None] * radial + self.along[:, None] * tangential).T
+        """Upward displacement of every grid point (n_cols, n_rows) (m) from contact-DOF values (harmonics, 2 c, 2 runs)."""
+        c, runs = self.columns, self.runs
+        values = values.reshape(values.shape[0], 2 * c, runs, 2)
+        out = np.empty((runs, c, self.cos.shape[0]))
+        for r in range(runs):
+            radial = self.cos @ values[:, :c, r, 0] + self.sin @ values[:, :c, r, 1]  # (rows, c)
+            tangential = self.sin @ values[:, c:, r, 0] - self.cos @ values[:, c:, r, 1]
+            out[r] = (self.down[:, None] * radial + self.along[:, None] * tangential).T
+        return self._as_given(out)
 
     def _split(self, loads: np.ndarray):
         start = 0
@@ -303,7 +330,7 @@ class HarmonicStepper:
             start += g.n.size
 
     def start(self, forces: np.ndarray) -> np.ndarray:
-        """Rest under the static contact forces (n_cols, n_rows); returns the grid's displacement (m)."""
+        """Rest under the static contact forces (n_cols, n_rows) (per run); returns the grid's displacement (m)."""
         for g, part in self._split(self.loads(forces)):
             g.start(part)
         return self.vertical(self._contact_values())
@@ -326,10 +353,13 @@ class HarmonicStepper:
             self._free.append(np.matmul(g.operator, g.stacked))
         return self.vertical(self._contact_values(self._free))
 
-    def advance(self, forces: np.ndarray) -> float:
-        """Complete the predicted step under the contact forces (n_cols, n_rows) (N); returns the hub force (N)."""
+    def advance(self, forces: np.ndarray) -> float | np.ndarray:
+        """Complete the predicted step under the contact forces (n_cols, n_rows) (N); returns the hub force (N).
+
+        With several runs: forces (runs, n_cols, n_rows), hub forces (runs,).
+        """
         dt, a = self.dt, self.scheme
-        hub = self.spread * float(forces.sum())
+        hub = self.spread * self._per_run(forces).sum(axis=(1, 2))
         for (g, part), free in zip(self._split(self.loads(forces)), self._free):
             q_new = free + np.matmul(g.load, part)
             ahead = g.q + dt * g.velocity + (0.5 - a.beta) * dt**2 * g.acceleration
@@ -343,8 +373,8 @@ class HarmonicStepper:
                 self.branches[c].update_in_place(g.states[c], old, new)
             g.q, g.acceleration = q_new, acceleration
             if 1 in g.n:  # the inertia at t_{n+1} is the unbalance (the scheme's acceleration lags it)
-                hub -= float(g.momentum @ g.unbalance[int(np.nonzero(g.n == 1)[0][0]), :, 0])
-        return hub
+                hub -= g.momentum @ g.unbalance[int(np.nonzero(g.n == 1)[0][0]), :, 0::2]
+        return float(hub[0]) if self.runs == 1 else hub
 
     def displacement(self) -> np.ndarray:
         """Upward displacement of every grid point at the current step (m), (n_cols, n_rows)."""
