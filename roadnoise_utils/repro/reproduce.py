@@ -39,12 +39,12 @@ from concurrent.futures import ProcessPoolExecutor, as_completed
 from pathlib import Path
 
 import nbformat
-from nbclient import NotebookClient
 from nbclient.exceptions import CellExecutionError, CellTimeoutError, DeadKernelError
 from tqdm.auto import tqdm
 
 from . import claims
 from .collection import gallery_markdown, markdown_table, notebooks
+from .kernel_client import PatientClient
 from .paths import REPO_ROOT, figure_dir
 
 _FIG = re.compile(r"Fig\.\s*(\d+)")
@@ -132,7 +132,7 @@ def execute_notebook(path: Path, timeout: int = CELL_TIMEOUT, retries: int = 1) 
     env = {**os.environ, "MPLBACKEND": INLINE_BACKEND}
     for attempt in range(retries + 1):
         nb = nbformat.read(path, as_version=4)
-        client = NotebookClient(
+        client = PatientClient(  # waits that survive a lost ZeroMQ wake-up (kernel_client)
             nb,
             timeout=timeout,
             kernel_name="python3",

@@ -93,7 +93,7 @@ def free_modes(even: EvenFootprint, laws: dict, f_free: float) -> FreeModes:
     for red in even.harmonics[: even.n_dynamic + 1]:
         n, proj = red.n, red.projected
         k = proj.dynamic_stiffness(laws, np.zeros(1), inertia=False)[0]
-        vals, vecs = sla.eig(k, proj.mass)
+        vals, vecs = _eig_mass(k, proj.mass)
         order = np.argsort(vals.real)
         vals, vecs = vals[order], vecs[:, order]
         keep = vals.real < lam_cut
@@ -107,6 +107,19 @@ def free_modes(even: EvenFootprint, laws: dict, f_free: float) -> FreeModes:
         )
         parts.append((vals, shapes, proj.momentum @ vecs, np.full(vals.size, n), np.arange(1, vals.size + 1)))
     return FreeModes(*(np.concatenate(p, axis=-1) for p in zip(*parts)))
+
+
+def _eig_mass(stiffness: np.ndarray, mass: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Eigenpairs of ``stiffness x = lambda mass x`` for a symmetric positive definite ``mass``.
+
+    As a standard problem through the Cholesky factor ``mass = L L^T`` (the QR algorithm on
+    ``L^-1 K L^-T``, about three times faster than the QZ of the pencil).
+    """
+    factor = np.linalg.cholesky(0.5 * (mass + mass.T))
+    half = sla.solve_triangular(factor, stiffness, lower=True)  # L^-1 K
+    standard = sla.solve_triangular(factor, half.T, lower=True).T  # L^-1 K L^-T
+    vals, vecs = sla.eig(standard, check_finite=False)
+    return vals, sla.solve_triangular(factor.T, vecs, lower=False)  # x = L^-T y
 
 
 @dataclass(frozen=True, eq=False)
