@@ -36,7 +36,7 @@ from threadpoolctl import threadpool_limits
 from .. import guards
 from ..tire import cross_section
 from ..tire.section_contact import angular_sums, patch_factor
-from ..tire.section_dynamics import direct_receptance, harmonic_modes, reduce_harmonic, rim_transfer
+from ..tire.section_dynamics import direct_receptance, harmonic_modes, lateral_mirror, reduce_harmonic, rim_transfer
 from ..tire.section_static import SectionStaticState, SectionTire
 from ..tire.tasselli import Tasselli
 from .frf import FRFResult
@@ -171,10 +171,14 @@ def _check_inputs(tire: SectionTire, static: SectionStaticState, freqs) -> np.nd
 
 
 def _dynamic_reductions(tire: SectionTire, f_max: float, cutoff: float) -> list:
-    """Reduced harmonics 0, 1, 2, ... with their modes, up to the first (n >= 2) with no mode below ``cutoff``."""
-    reduced = []
+    """Reduced harmonics 0, 1, 2, ... with their modes, up to the first (n >= 2) with no mode below ``cutoff``.
+
+    Each records the tire's left-right symmetry (:func:`.tire.section_dynamics.lateral_mirror`),
+    which halves its receptance's work twice over.
+    """
+    reduced, mirror = [], lateral_mirror(tire.ops)
     for n in range(tire.harmonics + 1):
-        red = reduce_harmonic(tire.ops, tire.grid.dofs, n, f_max, cutoff)
+        red = reduce_harmonic(tire.ops, tire.grid.dofs, n, f_max, cutoff, mirror=mirror)
         reduced.append(red)
         if n >= 2 and red.n_modes == 0:
             break
@@ -462,6 +466,7 @@ def _high_harmonics(tire: SectionTire, n_dyn: int, f_max: float) -> tuple:
     if n_all.size == 0:
         return n_all, np.zeros((0, 0)), []
     sampled = _sample_harmonics(n_dyn + 1, tire.harmonics)
-    reduced = [reduce_harmonic(ops, grid.dofs, n, f_max, None) for n in sampled]
+    mirror = lateral_mirror(ops)
+    reduced = [reduce_harmonic(ops, grid.dofs, n, f_max, None, mirror=mirror) for n in sampled]
     basis = CubicSpline(sampled, np.eye(sampled.size), axis=0)(n_all) if sampled.size > 1 else np.ones((1, 1))
     return n_all, basis, reduced

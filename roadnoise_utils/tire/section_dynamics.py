@@ -60,45 +60,120 @@ class Projected:
         return (weights.real @ stacked + 1j * (weights.imag @ stacked)).reshape(omegas.size, k, k)
 
 
+#: Largest departure from a mirror symmetry accepted in the reduced coordinates (relative).
+MIRROR_TOLERANCE = 1e-9
+
+
+@dataclass(frozen=True, eq=False)
+class _Condensed:
+    """One mirror-symmetry part of a harmonic, its basis rotated so that its first ``rank`` coordinates alone
+    move the contact DOF: the stacked matrices (gas, compounds..., mass) and ``R`` (rank, d)."""
+
+    names: tuple[str, ...]
+    matrices: np.ndarray  # (2 + n_compounds, k_part, k_part)
+    r: np.ndarray
+
+    def receptance(self, laws: dict, omegas: np.ndarray, inertia: bool) -> np.ndarray:
+        """This part's share of :math:`F_n(\\omega)`, (n_omega, d, d): :math:`R^T S^{-1} R` (see :meth:`ReducedHarmonic.receptance`)."""
+        factors = [np.ones(omegas.size)] + [laws[name].ratio(omegas) for name in self.names]
+        factors.append(-(omegas**2) if inertia else np.zeros(omegas.size))
+        weights = np.stack(factors, axis=1).astype(complex)
+        k, rank = self.matrices.shape[1], self.r.shape[0]
+        stacked = self.matrices.reshape(len(self.matrices), k * k)
+        stiffness = (weights.real @ stacked + 1j * (weights.imag @ stacked)).reshape(omegas.size, k, k)
+        condensed = stiffness[:, :rank, :rank]
+        if k > rank:
+            inner = np.linalg.solve(stiffness[:, rank:, rank:], stiffness[:, rank:, :rank])
+            condensed = condensed - np.matmul(stiffness[:, :rank, rank:], inner)
+        x = np.linalg.solve(condensed, np.broadcast_to(self.r.astype(complex), (omegas.size,) + self.r.shape))
+        return np.matmul(self.r.T, x)
+
+
+def _condense(projected: Projected, rotation: np.ndarray) -> _Condensed:
+    """The part of ``projected`` on the orthonormal coordinates ``rotation`` (k, k_part), condensed on its contact rank."""
+    contact = rotation.T @ projected.contact  # (k_part, d)
+    q, r, pivots = sla.qr(contact, mode="full", pivoting=True)
+    diag = np.abs(np.diag(r))
+    rank = int(np.sum(diag > 1e-10 * diag[0])) if diag.size else 0
+    r = r[:rank, np.argsort(pivots)]  # contact = q[:, :rank] r: the rest of q does not touch the contact DOF
+    basis = rotation @ q
+    names = tuple(projected.compounds)
+    parts = [projected.gas] + [projected.compounds[name] for name in names] + [projected.mass]
+    return _Condensed(names, np.stack([basis.T @ m @ basis for m in parts]), r)
+
+
 @dataclass(frozen=True, eq=False)
 class ReducedHarmonic:
-    """One harmonic projected on its Ritz basis (attachment shapes and modes, see the module notes)."""
+    """One harmonic projected on its Ritz basis (attachment shapes and modes, see the module notes).
+
+    ``mirror`` is the tire's left-right mirror (y -> -y) in the basis coordinates (k, k), when
+    the harmonic and its basis are symmetric (:func:`lateral_mirror`): the receptance then
+    splits into its symmetric and antisymmetric parts.
+    """
 
     n: int
     projected: Projected
     n_modes: int
+    mirror: np.ndarray | None = None
 
     @cached_property
-    def _condensed(self) -> tuple[Projected, np.ndarray]:
-        """The basis rotated so that only its first ``d`` coordinates move the contact DOF: (matrices, ``R``).
-
-        With ``C = Q [R; 0]`` (complete QR of the contact values, ``Q`` orthogonal), the
-        matrices on the basis ``Q`` and ``R`` (d, d) give the same receptance (Galerkin).
-        """
-        p = self.projected
-        d = p.contact.shape[1]
-        q, r = np.linalg.qr(p.contact, mode="complete")
-        compounds = {name: q.T @ matrix @ q for name, matrix in p.compounds.items()}
-        rotated = Projected(compounds, q.T @ p.gas @ q, q.T @ p.mass @ q, r, q.T @ p.momentum)
-        return rotated, r[:d]
+    def _condensed(self) -> list[_Condensed]:
+        """The basis split by the mirror (or whole) and rotated for the condensation on the contact DOF."""
+        k = self.projected.gas.shape[0]
+        if self.mirror is None:
+            return [_condense(self.projected, np.eye(k))]
+        sign, vectors = np.linalg.eigh(0.5 * (self.mirror + self.mirror.T))
+        return [_condense(self.projected, vectors[:, sign < 0]), _condense(self.projected, vectors[:, sign > 0])]
 
     def receptance(self, laws: dict, omegas: np.ndarray, inertia: bool = True) -> np.ndarray:
         """:math:`F_n(\\omega)` at the contact DOF (m/N), (n_omega, d, d) complex; quasi-static without ``inertia``.
 
-        On the rotated basis (:attr:`_condensed`) the contact values are ``[R; 0]``, so
-        :math:`F = R^T S^{-1} R` with :math:`S = D_{11} - D_{12} D_{22}^{-1} D_{21}` the dynamic
-        stiffness condensed on the first ``d`` coordinates: a third of the work of solving the
-        whole basis for the ``d`` contact loads.
+        On a basis rotated so that only its first coordinates move the contact DOF (``C = Q [R; 0]``,
+        a QR of the contact values), :math:`F = R^T S^{-1} R` with
+        :math:`S = D_{11} - D_{12} D_{22}^{-1} D_{21}` the dynamic stiffness condensed on them: a
+        third of the work of solving the whole basis for the ``d`` contact loads. A symmetric
+        harmonic does it on its symmetric and antisymmetric halves apart (the dynamic stiffness
+        has no coupling between them), a quarter of the work again.
         """
-        rotated, r = self._condensed
-        d = r.shape[0]
-        stiffness = rotated.dynamic_stiffness(laws, omegas, inertia)
-        condensed = stiffness[:, :d, :d]
-        if stiffness.shape[1] > d:
-            inner = np.linalg.solve(stiffness[:, d:, d:], stiffness[:, d:, :d])
-            condensed = condensed - np.matmul(stiffness[:, :d, d:], inner)
-        x = np.linalg.solve(condensed, np.broadcast_to(r.astype(complex), (stiffness.shape[0], d, d)))
-        return np.matmul(r.T, x)
+        omegas = np.asarray(omegas, float)
+        return sum(part.receptance(laws, omegas, inertia) for part in self._condensed)
+
+
+def lateral_mirror(ops: HarmonicOperators) -> tuple[np.ndarray, np.ndarray] | None:
+    """The left-right mirror (y -> -y) of the cross-section as a signed permutation of the DOF, or None.
+
+    ``(target, sign)``: the mirror of a field ``u`` is ``v[target] = sign * u`` (``u_r, u_theta``
+    kept, ``u_y`` reversed). ``None`` when a node has no mirror image (an asymmetric section).
+    The operators' symmetry is checked per harmonic (:func:`reduce_harmonic`).
+    """
+    r, y = ops.mesh.r, ops.mesh.y
+    scale = max(float(np.abs(r).max()), float(np.abs(y).max()), 1e-12)
+    key = {(round(a / scale, 9), round(b / scale, 9)): i for i, (a, b) in enumerate(zip(r, y))}
+    image = np.array([key.get((round(a / scale, 9), round(-b / scale, 9)), -1) for a, b in zip(r, y)])
+    if np.any(image < 0):
+        return None
+    target = (3 * image[:, None] + np.arange(3)).ravel()
+    return target, np.tile([1.0, 1.0, -1.0], r.size)
+
+
+def _mirror_in_basis(
+    projected: Projected, basis: np.ndarray, free: np.ndarray, mirror, n_dof: int
+) -> np.ndarray | None:
+    """The mirror in the basis coordinates, or None when the basis or the harmonic is not symmetric."""
+    target, sign = mirror
+    full = np.zeros((n_dof, basis.shape[1]))
+    full[free] = basis
+    mirrored = np.empty_like(full)
+    mirrored[target] = sign[:, None] * full
+    reduced = basis.T @ mirrored[free]
+    # the basis spans a symmetric space (an orthogonal involution) and every operator commutes with it
+    if np.abs(reduced @ reduced - np.eye(reduced.shape[0])).max() > MIRROR_TOLERANCE:
+        return None
+    for matrix in [projected.gas, projected.mass, *projected.compounds.values()]:
+        scale = np.abs(matrix).max()
+        if scale and np.abs(reduced @ matrix - matrix @ reduced).max() > MIRROR_TOLERANCE * scale:
+            return None
+    return reduced
 
 
 def _free_positions(ops: HarmonicOperators, dofs: np.ndarray) -> np.ndarray:
@@ -136,12 +211,19 @@ def harmonic_modes(ops: HarmonicOperators, n: int, omega: float, cutoff: float, 
 
 
 def reduce_harmonic(
-    ops: HarmonicOperators, dofs: np.ndarray, n: int, f_max: float, cutoff: float | None, both_ends: bool = True
+    ops: HarmonicOperators,
+    dofs: np.ndarray,
+    n: int,
+    f_max: float,
+    cutoff: float | None,
+    both_ends: bool = True,
+    mirror: tuple[np.ndarray, np.ndarray] | None = None,
 ) -> ReducedHarmonic:
     """Reduce harmonic ``n`` for the contact DOF ``dofs`` (see the module notes).
 
     ``cutoff`` (Hz) bounds the modes added to the basis; ``None`` for a quasi-static harmonic.
     ``both_ends=False`` keeps only the static shapes at 0 Hz (half the basis of a quasi-static harmonic).
+    ``mirror`` (:func:`lateral_mirror`) records the left-right symmetry when the basis has it.
     """
     free = ops.free
     position = _free_positions(ops, dofs)
@@ -158,7 +240,9 @@ def reduce_harmonic(
         n_modes = phi.shape[1]
         vectors.append(phi)
     basis = _orthonormal(np.concatenate(vectors, axis=1))
-    return ReducedHarmonic(n=n, projected=_project(ops, n, basis, position), n_modes=n_modes)
+    projected = _project(ops, n, basis, position)
+    in_basis = None if mirror is None else _mirror_in_basis(projected, basis, free, mirror, ops.n_dof)
+    return ReducedHarmonic(n=n, projected=projected, n_modes=n_modes, mirror=in_basis)
 
 
 def _orthonormal(vectors: np.ndarray, tol: float = 1e-10) -> np.ndarray:
