@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 from .. import guards
 from ..repro import stages
-from ..road.input import RoadInput, texture_input
+from ..road.input import RoadInput, contact_tracks, texture_input, texture_length
 from ..road.textures import RoadSpectrum, load_texture
 from ..tire.spec import TireSpec
 from ..tire.static import StaticState
@@ -116,7 +116,14 @@ class RoadTest:
 def texture_run(
     static: StaticState, spectrum: RoadSpectrum, conditions: RoadTestConditions, lateral: bool
 ) -> RoadInput:
-    """The tassello inputs of one texture under the test's speed, duration, seed and sample rate."""
+    """The tassello inputs of one texture under the test's speed, duration, seed and sample rate.
+
+    The generated road comes from the stage cache (:func:`roadnoise_utils.repro.stages.texture_road`):
+    every chapter and the claims drive over the same roads, generated once.
+    """
+    travel = conditions.duration * conditions.speed
+    tracks = contact_tracks(static) if lateral else None
+    road = stages.texture_road(spectrum, texture_length(spectrum, travel), conditions.seed, tracks)
     return texture_input(
         static,
         spectrum,
@@ -125,6 +132,7 @@ def texture_run(
         conditions.seed,
         lateral=lateral,
         sample_rate=conditions.sample_rate,
+        road=road,
     )
 
 

@@ -10,7 +10,8 @@
    evaluates every claim and starts last, when the chapters have computed their stages; BLAS runs one thread per kernel then (two pools on
    two cores made notebook 03 run 7-9x slower); a failing notebook stops the run and names its cell;
 2. checks that every plot cell (a top-level ``plt.show()``) produced its figure;
-3. evaluates every claim of ``data/paper/claims.toml`` (:mod:`.claims`);
+3. evaluates every claim of ``data/paper/claims.toml`` (:mod:`.claims`), as the pool's last task, beside the
+   overview (both only read the chapters' stages);
 4. only then writes, all at once: the figures (``figures/`` or ``--figures``, PNG, named after
    the notebook, the paper figure they mirror — read from the plot cell's heading comment,
    e.g. ``# Fig. 2 analogue: ...`` — and the caption, listed in ``index.csv``) and the report
@@ -35,11 +36,12 @@ import re
 import shutil
 import tempfile
 import time
-from concurrent.futures import ProcessPoolExecutor, as_completed
+from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from pathlib import Path
 
 import nbformat
 from nbclient.exceptions import CellExecutionError, CellTimeoutError, DeadKernelError
+from threadpoolctl import threadpool_limits
 from tqdm.auto import tqdm
 
 from . import claims
@@ -230,28 +232,56 @@ def start_order(paths: list[Path], seconds: dict[Path, float]) -> list[Path]:
     return sorted(paths[1:], key=lambda p: -seconds.get(p, 0.0)) + paths[:1]
 
 
+def _evaluated_claims(one_thread: bool):
+    """The claims report (:func:`.claims.report`), in a worker of the notebooks' pool."""
+    if not one_thread:
+        return claims.report()
+    with threadpool_limits(1):
+        return claims.report()
+
+
 def _execute_all(
-    paths: list[Path], timeout: int, workers: int, seconds: dict[Path, float] | None = None
-) -> dict[Path, nbformat.NotebookNode]:
+    paths: list[Path], timeout: int, workers: int, seconds: dict[Path, float] | None = None, report: bool = False
+) -> tuple[dict[Path, nbformat.NotebookNode], object]:
     """Every notebook executed, ``workers`` at a time; the first failure stops the run.
 
     The chapters start longest first by their expected ``seconds`` (in order without them: a
     long notebook started last keeps one core busy alone at the end); the overview (first)
-    evaluates every claim: started last, it finds the chapters' stages computed.
+    evaluates every claim: started last, it finds the chapters' stages computed. With
+    ``report`` the claims are evaluated once every chapter has ended, beside the overview (both
+    only read the chapters' stages), not after it. Returns the executed notebooks and the
+    report (or None).
     """
-    done = {}
+    done, table = {}, None
     started = start_order(paths, seconds or {})
+    chapters = set(started[:-1])
     with ProcessPoolExecutor(max_workers=workers, mp_context=multiprocessing.get_context("spawn")) as pool:
-        futures = {pool.submit(_timed_execution, path, timeout, workers > 1): path for path in started}
+        pending = {pool.submit(_timed_execution, path, timeout, workers > 1): path for path in started}
+        claims_due = report
+        progress = tqdm(total=len(pending) + int(report), desc="notebooks and claims")
         try:
-            for future in tqdm(as_completed(futures), total=len(futures), desc="notebooks"):
-                nb, seconds = future.result()
-                done[futures[future]] = nb
-                tqdm.write(f"{futures[future].name}: {seconds:.1f} s")
+            while pending:
+                finished, _ = wait(pending, return_when=FIRST_COMPLETED)
+                for future in finished:
+                    path = pending.pop(future)
+                    progress.update()
+                    if path is None:
+                        table = future.result()
+                        tqdm.write("the paper's claims evaluated")
+                        continue
+                    nb, elapsed = future.result()
+                    done[path] = nb
+                    chapters.discard(path)
+                    tqdm.write(f"{path.name}: {elapsed:.1f} s")
+                if claims_due and not chapters:  # every chapter ended: the stages are in the cache
+                    pending[pool.submit(_evaluated_claims, workers > 1)] = None
+                    claims_due = False
         except BaseException:
             pool.shutdown(wait=True, cancel_futures=True)
             raise
-    return {path: done[path] for path in paths}
+        finally:
+            progress.close()
+    return {path: done[path] for path in paths}, table
 
 
 def reproduce(
@@ -268,13 +298,9 @@ def reproduce(
     Returns the figure index rows and the report table (or ``None``). Raises
     :class:`ReproductionError` before writing anything if a notebook fails or a figure is missing.
     """
-    executed = _execute_all(paths, timeout, WORKERS if workers is None else workers, seconds)
+    executed, table = _execute_all(paths, timeout, WORKERS if workers is None else workers, seconds, report)
     if executed and not any(figure_names(nb, p.stem) for p, nb in executed.items()):
         raise ReproductionError("the notebooks produced no figure at all")
-    table = None
-    if report:
-        print("evaluating the paper's claims ...")
-        table = claims.report()
     out.parent.mkdir(parents=True, exist_ok=True)
     _remove_stale(out)
     staging = Path(tempfile.mkdtemp(prefix=f".{out.name}.new-", dir=out.parent))

@@ -18,6 +18,7 @@ stage                     caches
 :func:`fe_cleat_response` :func:`roadnoise_utils.response.fe_reference.fe_cleat_response`
 :func:`one_sided_run`     :func:`roadnoise_utils.response.one_sided.quasi_static_run` and
                           :func:`~roadnoise_utils.response.one_sided.dynamic_run` of a cleat
+:func:`texture_road`      :func:`roadnoise_utils.road.input.texture_road` (a generated road)
 ========================  ==================================================================
 
 :func:`load_tire`, :func:`build_fet` and :func:`assemble_fixed_hub` are fast and not cached.
@@ -41,8 +42,10 @@ from ..response.modal_reduction import ModalReduction
 from ..response.modes import LoadedModes
 from ..rm import moving_hub, order, realisation
 from ..rm.fitting import FitSet
+from ..road import input as road_input
 from ..road.cleat import cleat_input, cleat_profile
 from ..road.input import BAND, RoadInput
+from ..road.textures import RoadProfile, RoadSpectrum
 from ..tire import ring_model, section_static, spec, static
 from ..tire.cross_section import CrossSectionSpec
 from ..tire.ring_model import FETModel
@@ -366,6 +369,21 @@ def one_sided_run(
     return cached(one_sided_run, inputs, compute, runs=runs)
 
 
+def texture_road(spectrum: RoadSpectrum, length: float, seed: int, tracks: np.ndarray | None = None) -> RoadProfile:
+    """Cached :func:`roadnoise_utils.road.input.texture_road`: a generated road (3D over ``tracks``, m, or 2D)."""
+    inputs = {
+        "spectrum": spectrum,
+        "length": float(length),
+        "seed": int(seed),
+        "tracks": None if tracks is None else np.asarray(tracks, float),
+    }
+
+    def compute() -> RoadProfile:
+        return road_input.texture_road(spectrum, inputs["length"], inputs["seed"], inputs["tracks"])
+
+    return cached(texture_road, inputs, compute, runs=(road_input.texture_road,))
+
+
 __all__ = [
     "DEFAULT_FREQS",
     "FIT_TOLERANCE",
@@ -380,4 +398,5 @@ __all__ = [
     "modal_reduction",
     "one_sided_run",
     "solve_static",
+    "texture_road",
 ]

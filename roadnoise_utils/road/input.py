@@ -33,7 +33,7 @@ from .. import guards
 from ..tire.section_static import SectionStaticState
 from ..tire.static import StaticState
 from .kernels import strip_kernels
-from .textures import MAX_HEIGHT, RoadSpectrum, as_spectrum, generate_field, generate_profile
+from .textures import MAX_HEIGHT, RoadProfile, RoadSpectrum, as_spectrum, generate_field, generate_profile
 
 #: Simulation band of the RM model (Hz), paper abstract: "0-250 Hz".
 BAND = 250.0
@@ -282,6 +282,26 @@ def contact_tracks(static: StaticState) -> np.ndarray:
     return np.unique(centres[np.isfinite(centres)])
 
 
+#: Road grid of a generated texture (m): at most a fifth of its shortest wavelength (2 cm).
+TEXTURE_STEP = 0.004
+
+
+def texture_road(spectrum: RoadSpectrum, length: float, seed: int, tracks: np.ndarray | None = None) -> RoadProfile:
+    """The generated road of a texture run: 3D with one coherent track per lateral position in
+    ``tracks`` (m; :func:`.textures.generate_field`), or 2D, uniform across the width (``None``).
+
+    ``length`` (m) of road on the :data:`TEXTURE_STEP` grid; ``seed`` of the random phases.
+    """
+    if tracks is None:
+        return generate_profile(spectrum, length, TEXTURE_STEP, seed=seed)
+    return generate_field(spectrum, length, TEXTURE_STEP, tracks, seed=seed)
+
+
+def texture_length(spectrum: RoadSpectrum, travel: float) -> float:
+    """Road (m) a run of ``travel`` m needs: the travel, the footprint's margin, and every wavelength of the spectrum."""
+    return max(travel + ROAD_MARGIN, spectrum.max_wavelength)
+
+
 def texture_input(
     static: StaticState,
     spectrum: RoadSpectrum,
@@ -290,7 +310,7 @@ def texture_input(
     seed: int,
     lateral: bool = True,
     sample_rate: float | None = None,
-    step: float = 0.004,
+    road: RoadProfile | None = None,
 ) -> RoadInput:
     """Tassello displacements for ``duration`` s on a generated road of PSD ``spectrum``.
 
@@ -311,8 +331,9 @@ def texture_input(
         (:func:`.textures.generate_field`); ``False``: a 2D road uniform across the width.
     sample_rate : float, optional
         Samples per second; default :func:`sample_rate_for`.
-    step : float
-        Road grid of the generated profile (m), at most a fifth of the shortest wavelength.
+    road : RoadProfile, optional
+        The road :func:`texture_road` generates for these arguments, when already made (e.g.
+        from the stage cache); it must be that road (its tracks, length and seed are checked).
     """
     _check_static(static)
     spectrum = as_spectrum(spectrum)
@@ -326,12 +347,24 @@ def texture_input(
     n = int(duration * float(fs)) + 1
     _check_input_memory(static.tasselli, n, n, speed / float(fs), 1)  # before the road is generated
     travel = duration * speed
-    length = max(travel + ROAD_MARGIN, spectrum.max_wavelength)  # every wavelength of the spectrum fits
-    if lateral:
-        road = generate_field(spectrum, length, step, contact_tracks(static), seed=seed).as_3d()
-    else:
-        road = generate_profile(spectrum, length, step, seed=seed).as_2d()
+    length = texture_length(spectrum, travel)
+    tracks = contact_tracks(static) if lateral else None
+    if road is None:
+        road = texture_road(spectrum, length, seed, tracks)
+    elif (
+        road.seed != seed
+        or road.s.size * road.step < length
+        or not np.isclose(road.step, TEXTURE_STEP)
+        or not np.array_equal(road.y, np.zeros(1) if tracks is None else tracks)
+    ):
+        raise ValueError("road is not the road texture_road generates for these arguments (seed, length, tracks)")
     description = f"{spectrum.name} ({'3D' if lateral else '2D'}, seed {seed})"
     return profile_input(
-        static, road, speed, (0.0, travel), sample_rate=sample_rate, oversample=1, description=description
+        static,
+        road.as_3d() if lateral else road.as_2d(),
+        speed,
+        (0.0, travel),
+        sample_rate=sample_rate,
+        oversample=1,
+        description=description,
     )
