@@ -56,8 +56,8 @@ def free_dispersion(tire: SectionTire, n_max: int = 12, f_max: float = 400.0, pe
     rows = []
     for n in range(n_max + 1):
         phi = harmonic_modes(ops, n, omega, f_max, max_modes=40)
-        k = ops.stiffness(n, omega, storage_only=True)[free][:, free]
-        m = ops.mass_matrix(n)[free][:, free]
+        k = ops.free_stiffness(n, omega, storage_only=True)
+        m = ops.free_mass(n)
         for j in range(min(per_harmonic, phi.shape[1])):
             v = np.zeros(ops.n_dof)
             v[free] = phi[:, j]

@@ -135,7 +135,7 @@ def harmonic_flexibility(
     rhs[position, np.arange(dofs.size)] = 1.0
     out = np.empty((harmonics + 1, dofs.size, dofs.size), dtype=float if storage_only else complex)
     for n in range(harmonics + 1):
-        k = ops.stiffness(n, omega, storage_only=storage_only)[free][:, free].tocsc()
+        k = ops.free_stiffness(n, omega, storage_only=storage_only)
         out[n] = spla.splu(k).solve(rhs.astype(k.dtype))[position]
     return out
 

@@ -187,9 +187,9 @@ def _free_positions(ops: HarmonicOperators, dofs: np.ndarray) -> np.ndarray:
 def _project(ops: HarmonicOperators, n: int, basis: np.ndarray, position: np.ndarray) -> Projected:
     free = ops.free
     w = harmonic_weight(n)
-    compounds = {name: basis.T @ ((w * ops.compound(name, n)[free][:, free]) @ basis) for name in ops.scaled}
-    gas = basis.T @ ((w * ops.gas(n)[free][:, free]) @ basis)
-    mass_ff = w * ops.mass[free][:, free]
+    compounds = {name: basis.T @ ((w * ops.free_compound(name, n)) @ basis) for name in ops.scaled}
+    gas = basis.T @ ((w * ops.free_gas(n)) @ basis)
+    mass_ff = ops.free_mass(n)
     mass = basis.T @ (mass_ff @ basis)
     momentum = basis.T @ (mass_ff @ rigid_vertical(ops)[free]) if n == 1 else np.zeros(basis.shape[1])
     return Projected(compounds=compounds, gas=gas, mass=mass, contact=basis[position].T, momentum=momentum)
@@ -198,8 +198,8 @@ def _project(ops: HarmonicOperators, n: int, basis: np.ndarray, position: np.nda
 def harmonic_modes(ops: HarmonicOperators, n: int, omega: float, cutoff: float, max_modes: int = 40) -> np.ndarray:
     """Undamped modes of harmonic ``n`` below ``cutoff`` (Hz), storage moduli at ``omega``, (free, m)."""
     free = ops.free
-    k = ops.stiffness(n, omega, storage_only=True)[free][:, free].tocsc()
-    mass = ops.mass_matrix(n)[free][:, free].tocsc()
+    k = ops.free_stiffness(n, omega, storage_only=True)
+    mass = ops.free_mass(n)
     lam_cut = (2 * np.pi * cutoff) ** 2
     count = 8
     while True:
@@ -231,7 +231,7 @@ def reduce_harmonic(
     rhs[position, np.arange(dofs.size)] = 1.0
     w_max = 2 * np.pi * f_max
     vectors = [
-        spla.splu(ops.stiffness(n, w, storage_only=True)[free][:, free].tocsc()).solve(rhs)
+        spla.splu(ops.free_stiffness(n, w, storage_only=True)).solve(rhs)
         for w in ((0.0, w_max) if both_ends else (0.0,))
     ]
     n_modes = 0
@@ -256,7 +256,7 @@ def direct_receptance(ops: HarmonicOperators, dofs: np.ndarray, n: int, omega: f
     """:math:`F_n(\\omega)` by a sparse solve of the full harmonic (m/N), (d, d) complex: the reference."""
     free = ops.free
     position = _free_positions(ops, dofs)
-    k = ops.stiffness(n, omega)[free][:, free] - omega**2 * ops.mass_matrix(n)[free][:, free]
+    k = ops.free_stiffness(n, omega) - omega**2 * ops.free_mass(n)
     rhs = np.zeros((free.size, dofs.size), complex)
     rhs[position, np.arange(dofs.size)] = 1.0
     return spla.splu(k.tocsc()).solve(rhs)[position]

@@ -26,6 +26,7 @@ nonlinearity of inflating from the moulded shape.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 import scipy.sparse as sp
@@ -93,15 +94,47 @@ class HarmonicOperators:
         """DOF not clamped to the rim."""
         return np.setdiff1d(np.arange(self.n_dof), self.fixed)
 
+    @cached_property
+    def _pattern(self) -> _SharedPattern:
+        """Every operator's entries on one sparsity pattern (see :class:`_SharedPattern`)."""
+        bases = {("mass",): self.mass}
+        for name, blocks in self.elastic.items():
+            bases.update({("elastic", name, p): block for p, block in enumerate(blocks)})
+        bases.update({("geometric", p): block for p, block in enumerate(self.geometric)})
+        bases.update({("pressure", p): block for p, block in enumerate(self.pressure)})
+        return _SharedPattern(bases, self.free)
+
+    def _pneumatic_data(self, n: int) -> np.ndarray:
+        d = self._pattern.data
+        k0, k1, k2 = (d["geometric", p] for p in range(3))
+        return k0 + d["pressure", 0] + n * (k1 + d["pressure", 1]) + n * n * k2
+
+    def _gas_data(self, n: int) -> np.ndarray:
+        return self._pneumatic_data(n) if self.pneumatic_law is None else np.zeros(self._pattern.nnz)
+
+    def _compound_data(self, name: str, n: int) -> np.ndarray:
+        d = self._pattern.data
+        total = (
+            (d["elastic", name, 0] + n * d["elastic", name, 1] + n * n * d["elastic", name, 2])
+            if (name in self.elastic)
+            else np.zeros(self._pattern.nnz)
+        )
+        return total + self._pneumatic_data(n) if name == self.pneumatic_law else total
+
+    def _stiffness_data(self, n: int, omega: float, storage_only: bool) -> np.ndarray:
+        total = self._gas_data(n).astype(float if storage_only else complex)
+        for name in self.scaled:
+            g = complex(self.laws[name].ratio(omega))
+            total = total + (g.real if storage_only else g) * self._compound_data(name, n)
+        return harmonic_weight(n) * total
+
     def pneumatic(self, n: int) -> sp.csr_matrix:
         """Pneumatic stiffness at harmonic ``n``, pre-stress and pressure load together (without ``w_n``)."""
-        k0, k1, k2 = self.geometric
-        p0, p1 = self.pressure
-        return (k0 + p0 + n * (k1 + p1) + n * n * k2).tocsr()
+        return self._pattern.matrix(self._pneumatic_data(n))
 
     def gas(self, n: int) -> sp.csr_matrix:
         """Lossless stiffness at harmonic ``n`` (without ``w_n``): the pneumatic stiffness unless a law scales it."""
-        return self.pneumatic(n) if self.pneumatic_law is None else sp.csr_matrix(self.mass.shape)
+        return self._pattern.matrix(self._gas_data(n))
 
     @property
     def scaled(self) -> tuple[str, ...]:
@@ -113,27 +146,78 @@ class HarmonicOperators:
         """Elastic stiffness of one compound's layers at harmonic ``n`` (without ``w_n``); zero if it has none."""
         if name not in self.elastic:
             return sp.csr_matrix(self.mass.shape)
-        k0, k1, k2 = self.elastic[name]
-        return (k0 + n * k1 + n * n * k2).tocsr()
+        d = self._pattern.data
+        return self._pattern.matrix(d["elastic", name, 0] + n * d["elastic", name, 1] + n * n * d["elastic", name, 2])
 
     def compound(self, name: str, n: int) -> sp.csr_matrix:
         """Static stiffness scaled by one compound's law at harmonic ``n`` (without ``w_n``)."""
-        total = self.layers(name, n)
-        if name == self.pneumatic_law:
-            total = total + self.pneumatic(n)
-        return total.tocsr()
+        return self._pattern.matrix(self._compound_data(name, n))
 
     def stiffness(self, n: int, omega: float = 0.0, storage_only: bool = False) -> sp.csr_matrix:
         """``K_n(omega)`` (N/m), all DOF, weight ``w_n`` included; complex unless ``storage_only``."""
-        total = self.gas(n).astype(float if storage_only else complex)
-        for name in self.scaled:
-            g = complex(self.laws[name].ratio(omega))
-            total = total + (g.real if storage_only else g) * self.compound(name, n)
-        return (harmonic_weight(n) * total).tocsr()
+        return self._pattern.matrix(self._stiffness_data(n, omega, storage_only))
 
     def mass_matrix(self, n: int) -> sp.csr_matrix:
         """``M_n`` (kg), weight ``w_n`` included."""
-        return (harmonic_weight(n) * self.mass).tocsr()
+        return self._pattern.matrix(harmonic_weight(n) * self._pattern.data["mass",])
+
+    # the same on the free DOF (rim clamped), without slicing a sparse matrix each time
+
+    def free_stiffness(self, n: int, omega: float = 0.0, storage_only: bool = False) -> sp.csc_matrix:
+        """``K_n(omega)`` on the free DOF (:attr:`free`), CSC."""
+        return self._pattern.free_matrix(self._stiffness_data(n, omega, storage_only))
+
+    def free_mass(self, n: int) -> sp.csc_matrix:
+        """``M_n`` on the free DOF, CSC."""
+        return self._pattern.free_matrix(harmonic_weight(n) * self._pattern.data["mass",])
+
+    def free_compound(self, name: str, n: int) -> sp.csc_matrix:
+        """:meth:`compound` on the free DOF, CSC (without ``w_n``)."""
+        return self._pattern.free_matrix(self._compound_data(name, n))
+
+    def free_gas(self, n: int) -> sp.csc_matrix:
+        """:meth:`gas` on the free DOF, CSC (without ``w_n``)."""
+        return self._pattern.free_matrix(self._gas_data(n))
+
+
+class _SharedPattern:
+    """Sparse operators of one mesh on the union of their sparsity patterns (CSR, sorted).
+
+    Every operator's entries are stored aligned to the union, so a harmonic's stiffness is a
+    weighted sum of a few dense vectors and one matrix construction, instead of a dozen sparse
+    additions; the free-DOF block (rim clamped) keeps its own row and column index once found.
+    """
+
+    def __init__(self, bases: dict[tuple, sp.spmatrix], free: np.ndarray):
+        shape = next(iter(bases.values())).shape
+        union = sum((abs(sp.csr_matrix(b)) for b in bases.values()), sp.csr_matrix(shape)).tocsr()
+        union.sort_indices()
+        rows = np.repeat(np.arange(shape[0]), np.diff(union.indptr))
+        keys = rows.astype(np.int64) * shape[1] + union.indices
+        self.shape, self.indptr, self.indices, self.nnz = shape, union.indptr, union.indices, union.nnz
+        self.data = {}
+        for name, base in bases.items():
+            coo = sp.coo_matrix(base)
+            aligned = np.zeros(union.nnz, np.result_type(coo.data, float))
+            np.add.at(aligned, np.searchsorted(keys, coo.row.astype(np.int64) * shape[1] + coo.col), coo.data)
+            self.data[name] = aligned
+        position = np.full(shape[0], -1)
+        position[free] = np.arange(free.size)
+        keep = np.nonzero((position[rows] >= 0) & (position[union.indices] >= 0))[0]
+        self.free_take = keep
+        free_rows, free_cols = position[rows[keep]], position[union.indices[keep]]
+        self.free_shape = (free.size, free.size)
+        self.free_indptr = np.concatenate([[0], np.cumsum(np.bincount(free_rows, minlength=free.size))])
+        self.free_indices = free_cols
+
+    def matrix(self, data: np.ndarray) -> sp.csr_matrix:
+        """The operator with entries ``data`` (aligned to the union), all DOF."""
+        return sp.csr_matrix((data, self.indices, self.indptr), shape=self.shape)
+
+    def free_matrix(self, data: np.ndarray) -> sp.csc_matrix:
+        """Its free-DOF block, CSC."""
+        block = sp.csr_matrix((data[self.free_take], self.free_indices, self.free_indptr), shape=self.free_shape)
+        return block.tocsc()
 
 
 def _polynomial_blocks(b0: np.ndarray, b1: np.ndarray, weight: np.ndarray, middle: np.ndarray) -> tuple:

@@ -212,7 +212,7 @@ def loaded_displacement(tire: SectionTire, state: SectionStaticState, theta: np.
         np.add.at(loads[:, 1], 3 * nodes, f_r * sin_b)  # antisymmetric set
         np.add.at(loads[:, 1], 3 * nodes + 1, -f_t * cos_b)
         amplitude = np.zeros((ops.n_dof, 2))
-        k = ops.stiffness(n, storage_only=True)[free][:, free].tocsc()
+        k = ops.free_stiffness(n, storage_only=True)
         amplitude[free] = spla.splu(k).solve(loads[free])
         sym, anti = amplitude[:, 0].reshape(-1, 3), amplitude[:, 1].reshape(-1, 3)
         c, s = np.cos(n * theta)[:, None], np.sin(n * theta)[:, None]
