@@ -74,3 +74,31 @@ def test_section_modal_reduction_refuses_bad_options(built):
         section_modal.section_modal_reduction(tire, static, visco, anchors=(0.1, 1.0))
     with pytest.raises(TypeError, match="FRFResult"):
         section_modal.section_modal_reduction(tire, static, "visco")
+
+
+def test_loaded_modes_solved_by_left_right_parity_are_those_of_one_solve(built):
+    """The symmetric and antisymmetric free modes solved apart, and the loaded-mode matrix's two
+    parity blocks apart: the same eigenvalues as one solve of each; antisymmetric loaded modes
+    move no hub force."""
+    tire, static = built
+    even = section_modal.EvenFootprint.build(tire, static, 400.0, 1250.0)
+    laws = section_modal.frozen_laws(tire.ops.laws, 2 * np.pi * 80.0)
+    red = even.harmonics[3]
+    k = red.projected.dynamic_stiffness(laws, np.zeros(1), inertia=False)[0]
+    split, _, parity = section_modal._modes_by_parity(k, red.projected.mass, red.mirror)
+    whole, _ = section_modal._eig_mass(k, red.projected.mass)
+    assert set(parity) == {1, -1}
+    np.testing.assert_allclose(np.sort_complex(split), np.sort_complex(whole), rtol=1e-9)
+    modes = section_modal.section_loaded_modes(even, laws, 1250.0)
+    free = section_modal.free_modes(even, laws, 1250.0)
+    weight = even.pair_weight
+    k_loaded = np.diag(free.eigenvalues) + free.shapes.T @ np.linalg.solve(
+        next(even.receptances(np.zeros(1), laws, inertia=False))[1][0] / weight[None, :]
+        - (free.shapes / free.eigenvalues) @ free.shapes.T,
+        free.shapes,
+    )
+    one = np.sort_complex(np.linalg.eigvals(k_loaded))
+    one = one[one.real > 0]
+    np.testing.assert_allclose(np.sort_complex(modes.eigenvalues), one, rtol=1e-7)
+    odd = np.isin(modes.harmonic * 1000 + modes.order, (free.harmonic * 1000 + free.order)[free.parity < 0])
+    assert np.abs(modes.hub_gain[odd]).max() < 1e-9 * np.abs(modes.hub_gain).max()
