@@ -43,7 +43,7 @@ import scipy.linalg as sla
 from .. import guards
 from .rubber import PronyBranches, prony_series
 from .section_contact import ContactGrid, patch_factor, vertical_compliance
-from .section_dynamics import Projected, reduce_harmonic
+from .section_dynamics import Projected, ReducedHarmonic, lateral_mirror, reduce_harmonic
 from .section_static import SectionStaticState, SectionTire
 
 #: Spectral radius of the generalised-alpha scheme at infinite frequency (1: the trapezoidal rule):
@@ -67,12 +67,16 @@ class SteppedHarmonic:
         Modes in the Ritz basis (0: a quasi-static harmonic).
     dropped : int
         Directions of negative static stiffness left out.
+    parity : int
+        +1 / -1: the left-right symmetric / antisymmetric half of the harmonic's basis (a
+        symmetric tire's halves are stepped apart); 0: the whole basis.
     """
 
     n: int
     projected: Projected
     n_modes: int
     dropped: int
+    parity: int = 0
 
 
 def reduce_all(tire: SectionTire, f_max: float, cutoff_factor: float = CUTOFF_FACTOR) -> list[SteppedHarmonic]:
@@ -80,16 +84,35 @@ def reduce_all(tire: SectionTire, f_max: float, cutoff_factor: float = CUTOFF_FA
 
     With its modes up to the first ``n >= 2`` without one below ``cutoff_factor * f_max``; the
     rest on their static shapes at 0 Hz only (as accurate in the cleat runs as both ends, at a
-    third of the cost: the frozen check is unchanged to 1e-4).
+    third of the cost: the frozen check is unchanged to 1e-4). A left-right symmetric harmonic
+    (:func:`.section_dynamics.lateral_mirror`) gives its symmetric and antisymmetric halves,
+    which its matrices do not couple: stepping them apart reads half the operators' entries.
     """
-    out, dynamic = [], True
+    out, dynamic, mirror = [], True, lateral_mirror(tire.ops)
     for n in range(tire.harmonics + 1):
         cutoff = cutoff_factor * f_max if dynamic else None
-        red = reduce_harmonic(tire.ops, tire.grid.dofs, n, f_max, cutoff, both_ends=dynamic)
+        red = reduce_harmonic(tire.ops, tire.grid.dofs, n, f_max, cutoff, both_ends=dynamic, mirror=mirror)
         dynamic = dynamic and not (n >= 2 and red.n_modes == 0)
-        projected, dropped = passive_part(red.projected, list(tire.ops.scaled))
-        out.append(SteppedHarmonic(n, projected, red.n_modes, dropped))
+        for parity, half in parity_halves(red):
+            projected, dropped = passive_part(half, list(tire.ops.scaled))
+            out.append(SteppedHarmonic(n, projected, red.n_modes, dropped, parity))
     return out
+
+
+def parity_halves(red: ReducedHarmonic) -> list[tuple[int, Projected]]:
+    """``(parity, matrices)`` of a harmonic's left-right symmetric (+1) and antisymmetric (-1) halves, or ``(0, whole)``."""
+    if red.mirror is None:
+        return [(0, red.projected)]
+    p = red.projected
+    sign, vectors = np.linalg.eigh(0.5 * (red.mirror + red.mirror.T))
+    halves = []
+    for parity in (1, -1):
+        w = vectors[:, sign * parity > 0]
+        compounds = {name: w.T @ matrix @ w for name, matrix in p.compounds.items()}
+        halves.append(
+            (parity, Projected(compounds, w.T @ p.gas @ w, w.T @ p.mass @ w, w.T @ p.contact, w.T @ p.momentum))
+        )
+    return halves
 
 
 def passive_part(projected: Projected, names: list[str]) -> tuple[Projected, int]:
@@ -176,12 +199,12 @@ class _Group:
         self.load = np.zeros((h_count, size, d))  # (1 - af) A^-1 C^T
         self.contact = np.zeros((h_count, d, size))  # C
         self.static = np.zeros((h_count, size, size))  # inverse static stiffness
-        self.momentum = np.zeros(size)
+        self.momentum = np.zeros((h_count, size))  # vertical momentum per coordinate: n = 1 only
         self.dropped: dict[int, int] = {}  # harmonic: directions of negative static stiffness left out
         for i, h in enumerate(harmonics):
             p, k = h.projected, h.projected.gas.shape[0]  # mass-orthonormal: M = I
             if h.dropped:
-                self.dropped[h.n] = h.dropped
+                self.dropped[h.n] = self.dropped.get(h.n, 0) + h.dropped
             a = inertia * np.eye(k) + weight * (p.gas + sum(branches[c].factor * p.compounds[c] for c in names))
             a_inv = np.linalg.inv(0.5 * (a + a.T))
             blocks = [a_inv] + [weight * (a_inv @ p.compounds[c]) for c in names]
@@ -192,7 +215,8 @@ class _Group:
             stiff = p.gas + sum(p.compounds[c] for c in names)
             self.static[i, :k, :k] = np.linalg.inv(0.5 * (stiff + stiff.T))
             if h.n == 1:
-                self.momentum[:k] = p.momentum
+                self.momentum[i, :k] = p.momentum
+        self.moving = np.nonzero(self.n == 1)[0]  # the entries whose motion moves the centre of mass
         self.size, self.names = size, names
         self.q = np.zeros((h_count, size, 2 * runs))  # sets of run r at 2 r (symmetric) and 2 r + 1
         self.velocity = np.zeros_like(self.q)
@@ -253,12 +277,20 @@ class HarmonicStepper:
         n_all = tire.harmonics + 1
         guards.check_memory(8.0 * n_all * 160**2 * 8, f"the Newmark operators of {n_all} harmonics", "[mesh] harmonics")
         reduced = reduce_all(tire, f_max) if reduced is None else reduced
-        if [h.n for h in reduced] != list(range(n_all)):
-            raise ValueError(f"reduced must hold the harmonics 0..{n_all - 1} in order")
+        numbers = np.array([h.n for h in reduced])
+        halves: dict[int, list[int]] = {}
+        for h in reduced:
+            halves.setdefault(h.n, []).append(h.parity)
+        complete = all(sorted(p) in ([0], [-1, 1]) for p in halves.values())
+        if np.any(np.diff(numbers) < 0) or sorted(halves) != list(range(n_all)) or not complete:
+            raise ValueError(
+                f"reduced must hold the harmonics 0..{n_all - 1} in order, each whole or as its two halves (reduce_all)"
+            )
         ops = tire.ops
         self.branches = {c: PronyBranches(prony_series(ops.laws[c]), self.dt) for c in ops.scaled}
-        first_static = next((i for i, h in enumerate(reduced) if i >= 2 and h.n_modes == 0), n_all)
+        first_static = next((i for i, h in enumerate(reduced) if h.n >= 2 and h.n_modes == 0), len(reduced))
         parts = [reduced[:first_static], reduced[first_static:]]
+        self.n_harmonics = n_all
         self.scheme = GeneralizedAlpha(guards.real("spectral_radius", spectral_radius, 0.0, 1.0))
         self.groups = [_Group(part, self.dt, self.branches, self.scheme, self.runs) for part in parts if part]
         self.grid = grid
@@ -284,7 +316,7 @@ class HarmonicStepper:
 
     def effective_compliance(self) -> np.ndarray:
         """Vertical compliance of the contact grid within one step (m/N), (P, P) in the grid's point order."""
-        flex = np.concatenate([g.flexibility() for g in self.groups])
+        flex = self._per_harmonic([g.flexibility() for g in self.groups])
         return vertical_compliance(self.grid, 0.5 * (flex + np.transpose(flex, (0, 2, 1))))
 
     def _per_run(self, values: np.ndarray) -> np.ndarray:
@@ -324,10 +356,16 @@ class HarmonicStepper:
         return self._as_given(out)
 
     def _split(self, loads: np.ndarray):
-        start = 0
+        """Each group with the loads of its entries (a harmonic's halves see the same contact loads)."""
         for g in self.groups:
-            yield g, loads[start : start + g.n.size]
-            start += g.n.size
+            yield g, loads[g.n]
+
+    def _per_harmonic(self, values: list[np.ndarray]) -> np.ndarray:
+        """The groups' per-entry values (entries, ...) summed per harmonic (harmonics, ...)."""
+        out = np.zeros((self.n_harmonics,) + values[0].shape[1:], values[0].dtype)
+        for g, v in zip(self.groups, values):
+            np.add.at(out, g.n, v)
+        return out
 
     def start(self, forces: np.ndarray) -> np.ndarray:
         """Rest under the static contact forces (n_cols, n_rows) (per run); returns the grid's displacement (m)."""
@@ -337,7 +375,7 @@ class HarmonicStepper:
 
     def _contact_values(self, q: list[np.ndarray] | None = None) -> np.ndarray:
         q = [g.q for g in self.groups] if q is None else q
-        return np.concatenate([np.matmul(g.contact, x) for g, x in zip(self.groups, q)])
+        return self._per_harmonic([np.matmul(g.contact, x) for g, x in zip(self.groups, q)])
 
     def predict(self) -> np.ndarray:
         """The next step with no new contact force: grid displacement (m); kept for :meth:`advance`."""
@@ -372,8 +410,8 @@ class HarmonicStepper:
             for c in g.names:
                 self.branches[c].update_in_place(g.states[c], old, new)
             g.q, g.acceleration = q_new, acceleration
-            if 1 in g.n:  # the inertia at t_{n+1} is the unbalance (the scheme's acceleration lags it)
-                hub -= g.momentum @ g.unbalance[int(np.nonzero(g.n == 1)[0][0]), :, 0::2]
+            for e in g.moving:  # the inertia at t_{n+1} is the unbalance (the scheme's acceleration lags it)
+                hub -= g.momentum[e] @ g.unbalance[e, :, 0::2]
         return float(hub[0]) if self.runs == 1 else hub
 
     def displacement(self) -> np.ndarray:
