@@ -134,7 +134,7 @@ print(f"corner stable: {bool(np.all(poles.real < 0))}; body bounce {np.sort(np.a
 # %%
 # NBVAL_IGNORE_OUTPUT
 # One run per texture: road -> tassello inputs -> F_F -> corner -> Welch spectra (2 Hz resolution,
-# Hann, 50 % overlap, first 0.5 s dropped); timed
+# Hann, 50 % overlap, first 0.5 s dropped); timed (a generated road comes from the stage cache once made)
 drive = ru.experiments.quarter_car(setup, road_test)
 spectra = drive.spectra
 f_psd = spectra[texture_names[0]]["a_hub"][0]

@@ -262,7 +262,7 @@ for speed, dt in ((0.1, 5e-3), (0.03, 1e-2)):
 
 # %%
 # NBVAL_IGNORE_OUTPUT
-# The cross-section tire's runs (cached stages; ~3 min on a fresh checkout)
+# The cross-section tire's runs (cached stages; about a minute on a fresh checkout)
 section = ru.experiments.section_cleat_test(conditions=conditions)
 section_raw = ru.experiments.section_contact.raw_dynamic(conditions=conditions)
 section_frozen = ru.experiments.section_frozen_check(conditions=conditions)
