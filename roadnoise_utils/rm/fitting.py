@@ -251,7 +251,7 @@ def _relocate(s: np.ndarray, h: np.ndarray, w: np.ndarray, real: np.ndarray, upp
     rhs = relax * (scale * n_s)[:, None]
     col = np.sqrt(np.diagonal(normal, axis1=1, axis2=2)).copy()
     col[col == 0] = 1.0
-    x = np.linalg.solve(normal / (col[:, :, None] * col[:, None, :]), (rhs / col)[..., None])[..., 0] / col
+    x = _solve_normal(normal / (col[:, :, None] * col[:, None, :]), rhs / col) / col
     c_sigma, d_sigma = x[:, n + 1 : 2 * n + 1], x[:, 2 * n + 1]
     d_sigma = np.where(np.abs(d_sigma) < 1e-8, np.where(d_sigma >= 0, 1e-8, -1e-8), d_sigma)
     a, b = _state_matrices(real, upper)
@@ -259,6 +259,19 @@ def _relocate(s: np.ndarray, h: np.ndarray, w: np.ndarray, real: np.ndarray, upp
     zeros = np.where(zeros.real > 0, -zeros.real + 1j * zeros.imag, zeros)  # enforce stability
     tiny = np.abs(zeros.real) < 1e-6 * np.abs(zeros)
     return np.where(tiny, -1e-6 * np.abs(zeros) + 1j * zeros.imag, zeros)
+
+
+def _solve_normal(matrix: np.ndarray, rhs: np.ndarray) -> np.ndarray:
+    """Solutions of a batch of normal equations (G, m, m) x = (G, m); a singular one by least squares.
+
+    A starting pole set with coinciding columns makes a relocation's normal matrix exactly
+    singular in some BLAS builds (seen with OpenBLAS's Haswell kernels on one thread): its
+    minimum-norm least-squares solution relocates the poles as well.
+    """
+    try:
+        return np.linalg.solve(matrix, rhs[..., None])[..., 0]
+    except np.linalg.LinAlgError:
+        return np.stack([np.linalg.lstsq(m, r, rcond=None)[0] for m, r in zip(matrix, rhs)])
 
 
 def _residues(s: np.ndarray, h: np.ndarray, w: np.ndarray, poles: np.ndarray, dc: complex | None):
