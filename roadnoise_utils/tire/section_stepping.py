@@ -217,6 +217,8 @@ class _Group:
             if h.n == 1:
                 self.momentum[i, :k] = p.momentum
         self.moving = np.nonzero(self.n == 1)[0]  # the entries whose motion moves the centre of mass
+        self.harmonics = np.unique(self.n)  # a harmonic's entries (its whole basis or its halves) are adjacent
+        self.firsts = np.searchsorted(self.n, self.harmonics)
         self.size, self.names = size, names
         self.q = np.zeros((h_count, size, 2 * runs))  # sets of run r at 2 r (symmetric) and 2 r + 1
         self.velocity = np.zeros_like(self.q)
@@ -361,10 +363,10 @@ class HarmonicStepper:
             yield g, loads[g.n]
 
     def _per_harmonic(self, values: list[np.ndarray]) -> np.ndarray:
-        """The groups' per-entry values (entries, ...) summed per harmonic (harmonics, ...)."""
-        out = np.zeros((self.n_harmonics,) + values[0].shape[1:], values[0].dtype)
+        """The groups' per-entry values (entries, ...) summed per harmonic (harmonics, ...); a harmonic is in one group."""
+        out = np.empty((self.n_harmonics,) + values[0].shape[1:], values[0].dtype)
         for g, v in zip(self.groups, values):
-            np.add.at(out, g.n, v)
+            out[g.harmonics] = np.add.reduceat(v, g.firsts, axis=0)
         return out
 
     def start(self, forces: np.ndarray) -> np.ndarray:
