@@ -258,6 +258,9 @@ def _execute_all(
     with ProcessPoolExecutor(max_workers=workers, mp_context=multiprocessing.get_context("spawn")) as pool:
         pending = {pool.submit(_timed_execution, path, timeout, workers > 1): path for path in started}
         claims_due = report
+        if claims_due and not started:  # no notebook: the claims alone
+            pending[pool.submit(_evaluated_claims, workers > 1)] = None
+            claims_due = False
         progress = tqdm(total=len(pending) + int(report), desc="notebooks and claims")
         try:
             while pending:

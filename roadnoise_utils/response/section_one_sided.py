@@ -158,7 +158,7 @@ def section_dynamic_run(
     linear model, to compare with the frequency domain. ``reduced``: the harmonics of
     :func:`.tire.section_stepping.reduce_all` when already built.
     """
-    return section_dynamic_runs(tire, static, profile, speed, distance, dt, (frozen,), reduced)[0]
+    return section_dynamic_runs(tire, static, profile, speed, distance, dt, (bool(frozen),), reduced)[0]
 
 
 def section_dynamic_runs(

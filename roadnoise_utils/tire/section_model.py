@@ -198,8 +198,10 @@ class _SharedPattern:
         self.data = {}
         for name, base in bases.items():
             coo = sp.coo_matrix(base)
+            stored = coo.data != 0  # explicitly stored zeros are not in the union (a sum drops them)
+            row, col, value = coo.row[stored], coo.col[stored], coo.data[stored]
             aligned = np.zeros(union.nnz, np.result_type(coo.data, float))
-            np.add.at(aligned, np.searchsorted(keys, coo.row.astype(np.int64) * shape[1] + coo.col), coo.data)
+            np.add.at(aligned, np.searchsorted(keys, row.astype(np.int64) * shape[1] + col), value)
             self.data[name] = aligned
         position = np.full(shape[0], -1)
         position[free] = np.arange(free.size)

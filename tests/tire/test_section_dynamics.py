@@ -53,3 +53,16 @@ def test_the_shared_pattern_gives_the_operators_exactly(tire):
         assert abs(ops.layers("tread", n) - layers).max() <= 1e-12 * abs(layers).max()
         full = ops.stiffness(n, 2 * np.pi * 80.0)
         assert abs(ops.free_stiffness(n, 2 * np.pi * 80.0) - full[free][:, free]).max() == 0.0
+
+
+def test_the_shared_pattern_ignores_explicitly_stored_zeros():
+    """A base matrix may store zeros the union (a sum) drops; even one beyond the union's last entry."""
+    import scipy.sparse as sp
+
+    from roadnoise_utils.tire.section_model import _SharedPattern
+
+    diagonal = sp.csr_matrix(np.diag([1.0, 2.0, 0.0]))
+    stored_zero = sp.csr_matrix((np.array([3.0, 0.0]), np.array([0, 2]), np.array([0, 1, 1, 2])), shape=(3, 3))
+    pattern = _SharedPattern({"a": diagonal, "b": stored_zero}, np.arange(3))
+    assert np.array_equal(pattern.matrix(pattern.data["b"]).toarray(), stored_zero.toarray())
+    assert np.array_equal(pattern.free_matrix(pattern.data["a"]).toarray(), diagonal.toarray())
