@@ -41,7 +41,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg as sla
 
-from ..tire.section_dynamics import frozen_laws, tire_mass
+from ..tire.section_dynamics import frozen_laws, parity_bases, tire_mass
 from ..tire.section_static import SectionStaticState, SectionTire
 from .frf import FRFResult
 from .modal_reduction import (
@@ -124,9 +124,8 @@ def _modes_by_parity(
     if mirror is None:
         vals, vecs = _eig_mass(stiffness, mass)
         return vals, vecs, np.zeros(vals.size, int)
-    sign, basis = np.linalg.eigh(0.5 * (mirror + mirror.T))
     out = []
-    for parity, part in ((1, basis[:, sign > 0]), (-1, basis[:, sign < 0])):
+    for parity, part in parity_bases(mirror):
         vals, vecs = _eig_mass(part.T @ stiffness @ part, part.T @ mass @ part)
         out.append((vals, part @ vecs, np.full(vals.size, parity)))
     return tuple(np.concatenate(p, axis=-1) for p in zip(*out))

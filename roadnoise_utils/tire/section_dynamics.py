@@ -45,19 +45,33 @@ class Projected:
     contact: np.ndarray  # (k, d): basis values at the contact DOF
     momentum: np.ndarray  # (k,): vertical momentum per unit coordinate (kg), zero unless n = 1
 
+    @cached_property
+    def _stacked(self) -> np.ndarray:
+        """(gas, compounds..., mass) flattened, (2 + n_compounds, k * k): the terms of :meth:`dynamic_stiffness`."""
+        k = self.gas.shape[0]
+        return np.stack([self.gas, *self.compounds.values(), self.mass]).reshape(-1, k * k)
+
     def dynamic_stiffness(self, laws: dict, omegas: np.ndarray, inertia: bool = True) -> np.ndarray:
         """Projected :math:`K_n(\\omega) - \\omega^2 M_n`, (n_omega, k, k) complex."""
         omegas = np.asarray(omegas, float)
-        names = list(self.compounds)
-        factors = [np.ones(omegas.size)] + [laws[name].ratio(omegas) for name in names]
-        matrices = [self.gas] + [self.compounds[name] for name in names]
-        if inertia:
-            factors.append(-(omegas**2))
-            matrices.append(self.mass)
+        factors = [np.ones(omegas.size)] + [laws[name].ratio(omegas) for name in self.compounds]
+        factors.append(-(omegas**2) if inertia else np.zeros(omegas.size))
         k = self.gas.shape[0]
-        stacked = np.stack(matrices).reshape(len(matrices), k * k)
         weights = np.stack(factors, axis=1).astype(complex)  # real matrices: real and imaginary parts apart
-        return (weights.real @ stacked + 1j * (weights.imag @ stacked)).reshape(omegas.size, k, k)
+        return (weights.real @ self._stacked + 1j * (weights.imag @ self._stacked)).reshape(omegas.size, k, k)
+
+    def rotated(self, basis: np.ndarray) -> Projected:
+        """The same matrices on the orthonormal coordinates ``basis`` (k, k_new) of this basis."""
+        compounds = {name: basis.T @ m @ basis for name, m in self.compounds.items()}
+        return Projected(compounds, basis.T @ self.gas @ basis, basis.T @ self.mass @ basis,
+                         basis.T @ self.contact, basis.T @ self.momentum)  # fmt: skip
+
+
+def parity_bases(mirror: np.ndarray) -> list[tuple[int, np.ndarray]]:
+    """``(+1, W_s), (-1, W_a)``: orthonormal bases of the left-right symmetric and antisymmetric halves
+    of a harmonic's Ritz coordinates, from its mirror there (:attr:`ReducedHarmonic.mirror`)."""
+    sign, vectors = np.linalg.eigh(0.5 * (mirror + mirror.T))
+    return [(parity, vectors[:, sign * parity > 0]) for parity in (1, -1)]
 
 
 #: Largest departure from a mirror symmetry accepted in the reduced coordinates (relative).
@@ -67,20 +81,15 @@ MIRROR_TOLERANCE = 1e-9
 @dataclass(frozen=True, eq=False)
 class _Condensed:
     """One mirror-symmetry part of a harmonic, its basis rotated so that its first ``rank`` coordinates alone
-    move the contact DOF: the stacked matrices (gas, compounds..., mass) and ``R`` (rank, d)."""
+    move the contact DOF: its matrices there and ``R`` (rank, d)."""
 
-    names: tuple[str, ...]
-    matrices: np.ndarray  # (2 + n_compounds, k_part, k_part)
+    projected: Projected
     r: np.ndarray
 
     def receptance(self, laws: dict, omegas: np.ndarray, inertia: bool) -> np.ndarray:
         """This part's share of :math:`F_n(\\omega)`, (n_omega, d, d): :math:`R^T S^{-1} R` (see :meth:`ReducedHarmonic.receptance`)."""
-        factors = [np.ones(omegas.size)] + [laws[name].ratio(omegas) for name in self.names]
-        factors.append(-(omegas**2) if inertia else np.zeros(omegas.size))
-        weights = np.stack(factors, axis=1).astype(complex)
-        k, rank = self.matrices.shape[1], self.r.shape[0]
-        stacked = self.matrices.reshape(len(self.matrices), k * k)
-        stiffness = (weights.real @ stacked + 1j * (weights.imag @ stacked)).reshape(omegas.size, k, k)
+        stiffness = self.projected.dynamic_stiffness(laws, omegas, inertia)
+        k, rank = stiffness.shape[1], self.r.shape[0]
         condensed = stiffness[:, :rank, :rank]
         if k > rank:
             inner = np.linalg.solve(stiffness[:, rank:, rank:], stiffness[:, rank:, :rank])
@@ -96,10 +105,7 @@ def _condense(projected: Projected, rotation: np.ndarray) -> _Condensed:
     diag = np.abs(np.diag(r))
     rank = int(np.sum(diag > 1e-10 * diag[0])) if diag.size else 0
     r = r[:rank, np.argsort(pivots)]  # contact = q[:, :rank] r: the rest of q does not touch the contact DOF
-    basis = rotation @ q
-    names = tuple(projected.compounds)
-    parts = [projected.gas] + [projected.compounds[name] for name in names] + [projected.mass]
-    return _Condensed(names, np.stack([basis.T @ m @ basis for m in parts]), r)
+    return _Condensed(projected.rotated(rotation @ q), r)
 
 
 @dataclass(frozen=True, eq=False)
@@ -122,8 +128,7 @@ class ReducedHarmonic:
         k = self.projected.gas.shape[0]
         if self.mirror is None:
             return [_condense(self.projected, np.eye(k))]
-        sign, vectors = np.linalg.eigh(0.5 * (self.mirror + self.mirror.T))
-        return [_condense(self.projected, vectors[:, sign < 0]), _condense(self.projected, vectors[:, sign > 0])]
+        return [_condense(self.projected, basis) for _, basis in parity_bases(self.mirror)]
 
     def receptance(self, laws: dict, omegas: np.ndarray, inertia: bool = True) -> np.ndarray:
         """:math:`F_n(\\omega)` at the contact DOF (m/N), (n_omega, d, d) complex; quasi-static without ``inertia``.

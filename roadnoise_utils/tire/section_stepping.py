@@ -43,7 +43,7 @@ import scipy.linalg as sla
 from .. import guards
 from .rubber import PronyBranches, prony_series
 from .section_contact import ContactGrid, patch_factor, vertical_compliance
-from .section_dynamics import Projected, ReducedHarmonic, lateral_mirror, reduce_harmonic
+from .section_dynamics import Projected, ReducedHarmonic, lateral_mirror, parity_bases, reduce_harmonic
 from .section_static import SectionStaticState, SectionTire
 
 #: Spectral radius of the generalised-alpha scheme at infinite frequency (1: the trapezoidal rule):
@@ -103,16 +103,7 @@ def parity_halves(red: ReducedHarmonic) -> list[tuple[int, Projected]]:
     """``(parity, matrices)`` of a harmonic's left-right symmetric (+1) and antisymmetric (-1) halves, or ``(0, whole)``."""
     if red.mirror is None:
         return [(0, red.projected)]
-    p = red.projected
-    sign, vectors = np.linalg.eigh(0.5 * (red.mirror + red.mirror.T))
-    halves = []
-    for parity in (1, -1):
-        w = vectors[:, sign * parity > 0]
-        compounds = {name: w.T @ matrix @ w for name, matrix in p.compounds.items()}
-        halves.append(
-            (parity, Projected(compounds, w.T @ p.gas @ w, w.T @ p.mass @ w, w.T @ p.contact, w.T @ p.momentum))
-        )
-    return halves
+    return [(parity, red.projected.rotated(basis)) for parity, basis in parity_bases(red.mirror)]
 
 
 def passive_part(projected: Projected, names: list[str]) -> tuple[Projected, int]:
