@@ -14,7 +14,9 @@ as the paper's FE model with the contact set frozen). At each frequency:
 3. the hub force per unit road displacement at each point,
    :math:`h(\\omega) = C(\\omega)^{-1} t(\\omega)`: a road displacement field ``d`` gives the
    hub force :math:`h^T d`; every point moving together gives :math:`H_{tot} = \\sum h`, the
-   points of tassello ``i`` together give :math:`H_i`.
+   points of tassello ``i`` together give :math:`H_i`. On a left-right symmetric tire the solve
+   splits into the loads' symmetric and antisymmetric parts, each on one point of each lateral
+   pair (:class:`LateralSplit`): half the angular sums, a quarter of the solve's work.
 
 With the points held, a rim motion meets the dynamic stiffness :math:`D_{rim} + t^T C^{-1} t`
 (the moving hub's tire, paper Eq. 5-7): ``D_rim`` with the tread free, plus the forces that hold
@@ -29,7 +31,6 @@ from dataclasses import dataclass, replace
 from itertools import repeat
 
 import numpy as np
-import scipy.linalg as sla
 from scipy.interpolate import CubicSpline
 from threadpoolctl import threadpool_limits
 
@@ -39,6 +40,15 @@ from ..tire.section_contact import angular_sums, patch_factor
 from ..tire.section_dynamics import direct_receptance, harmonic_modes, lateral_mirror, reduce_harmonic, rim_transfer
 from ..tire.section_static import SectionStaticState, SectionTire
 from ..tire.tasselli import Tasselli
+from .footprint_points import (
+    LateralSplit,
+    Projection,
+    angular_table,
+    blocks_by_sum,
+    even_projection,
+    gather_table,
+    lateral_split,
+)
 from .frf import FRFResult
 
 #: Frequencies per block of the evaluation (memory: block x offsets x (2 columns)^2 complex).
@@ -134,10 +144,10 @@ def contact_receptance(tire: SectionTire, static: SectionStaticState, frequency:
     sums = angular_sums(flex, offsets, grid.dtheta)
     th = grid.theta[row]
     offset_index = row[:, None] - row[None, :] + grid.n_rows - 1
-    projection = _Projection(col, th, col, th, offset_index, offset_index, grid.n_cols)
+    projection = Projection((col, th), (col, th), (col, th), offset_index, offset_index, grid.n_cols)
     c = grid.n_cols
     blocks = np.stack([sums[:, :c, :c], sums[:, c:, c:], sums[:, :c, c:], sums[:, c:, :c]], axis=1)
-    table = _gather_table(blocks.view(float).reshape(blocks.shape + (2,)))
+    table = gather_table(blocks.view(float).reshape(blocks.shape + (2,)))
     return projection.block(table, projection.direct, projection.weights[0])
 
 
@@ -210,37 +220,6 @@ def _trig(n: np.ndarray, offsets: np.ndarray, dtheta: float, basis: np.ndarray |
     return cos, sin
 
 
-def _blocks_by_sum(receptance: np.ndarray, c: int) -> np.ndarray:
-    """A harmonic's receptances (b, 2c, 2c) as its blocks in summation order (b, 4, c, c).
-
-    ``rr`` and ``tt`` (summed with ``cos``), then ``-rt`` and ``tr`` (summed with ``sin``), as
-    :func:`.tire.section_contact.angular_sums` sums them.
-    """
-    out = np.empty((receptance.shape[0], 4, c, c), receptance.dtype)
-    out[:, 0], out[:, 1] = receptance[:, :c, :c], receptance[:, c:, c:]
-    out[:, 2], out[:, 3] = -receptance[:, :c, c:], receptance[:, c:, :c]
-    return out
-
-
-def _angular(blocks: np.ndarray, cos: np.ndarray, sin: np.ndarray) -> np.ndarray:
-    """Harmonic sums of one frequency's receptance blocks (n_n, 4, c, c) (:func:`_blocks_by_sum`) as a gather table.
-
-    Returns (n_off c c, 8) real: for each (offset, column, column) the real and imaginary parts
-    of ``rr, tt, rt, tr`` (:func:`_gather_table`). The weights are real, so each sum is one real
-    product over the real and imaginary parts together (half the work of a complex one).
-    """
-    n_n, _, c, _ = blocks.shape
-    values = blocks.view(float).reshape(n_n, 2, -1)  # (n_n, [rr tt | rt tr], 2 c c complex as floats)
-    even = (cos @ values[:, 0]).reshape(-1, 2, c, c, 2)
-    odd = (sin @ values[:, 1]).reshape(-1, 2, c, c, 2)
-    return _gather_table(np.concatenate([even, odd], axis=1))
-
-
-def _gather_table(sums: np.ndarray) -> np.ndarray:
-    """Sums (n_off, 4, c, c, 2) (blocks ``rr, tt, rt, tr``; real and imaginary parts) as (n_off c c, 8)."""
-    return np.ascontiguousarray(np.moveaxis(sums, 1, 3)).reshape(-1, 8)
-
-
 def _mirror_pairs(static: SectionStaticState) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Fore-aft mirror of the contact points: (points with theta >= 0, index of each point's
     representative among them, the mirror partner of each representative or -1 on theta = 0).
@@ -283,6 +262,12 @@ class EvenFootprint:
     n_dynamic : int
     keep, representative, partner : ndarray of int
         See :func:`_mirror_pairs`.
+    cos, sin : ndarray
+        Weights of the harmonic sums (:func:`_trig`).
+    projection : Projection
+        ``comp`` from the gather table of every column (:meth:`receptances`).
+    lateral : LateralSplit
+        The solve of :meth:`footprint` split by the left-right mirror (the plain solve without one).
     """
 
     tire: SectionTire
@@ -294,7 +279,8 @@ class EvenFootprint:
     partner: np.ndarray
     cos: np.ndarray
     sin: np.ndarray
-    projection: _Projection
+    projection: Projection
+    lateral: LateralSplit
 
     @classmethod
     def build(cls, tire: SectionTire, static: SectionStaticState, f_max: float, cutoff: float) -> EvenFootprint:
@@ -305,21 +291,14 @@ class EvenFootprint:
             dynamic = _dynamic_reductions(tire, f_max, cutoff)
             n_high, basis, high = _high_harmonics(tire, len(dynamic) - 1, f_max)
         offsets = _offsets(static)
-        col, row = static.points
-        th = grid.theta[row]
-        centre = (offsets.size - 1) // 2
-        direct = row[keep][:, None] - row[keep][None, :] + centre
-        paired = partner >= 0
-        mirrored = row[keep][:, None] - row[partner[paired]][None, :] + centre
         cos_dyn, sin_dyn = _trig(np.arange(len(dynamic)), offsets, grid.dtheta)
         cos_high, sin_high = _trig(n_high, offsets, grid.dtheta, basis)
-        projection = _Projection(
-            col[keep], th[keep], col[partner[paired]], th[partner[paired]], direct, mirrored, grid.n_cols
-        )
+        harmonics = dynamic + high
+        projection = even_projection(static, keep, partner, np.arange(keep.size))
         return cls(
             tire=tire,
             static=static,
-            harmonics=dynamic + high,
+            harmonics=harmonics,
             n_dynamic=len(dynamic) - 1,
             keep=keep,
             representative=representative,
@@ -327,6 +306,7 @@ class EvenFootprint:
             cos=np.hstack([cos_dyn, cos_high]),
             sin=np.hstack([sin_dyn, sin_high]),
             projection=projection,
+            lateral=lateral_split(tire, static, keep, partner, harmonics),
         )
 
     @property
@@ -334,19 +314,15 @@ class EvenFootprint:
         """2 for a representative with a mirror partner, 1 on ``theta = 0`` (R,)."""
         return np.where(self.partner >= 0, 2.0, 1.0)
 
-    def receptances(self, omegas: np.ndarray, laws: dict | None = None, inertia: bool = True):
-        """``comp`` at angular frequencies ``omegas`` (rad/s), in blocks: yields ``(slice, (b, R, R))``.
-
-        ``laws`` default the tire's own (frequency-dependent) compound laws.
-        """
-        ops = self.tire.ops
-        laws = ops.laws if laws is None else laws
+    def _blocks(self, omegas: np.ndarray, laws: dict | None, inertia: bool, columns: np.ndarray):
+        """Yields ``(slice, tables)``: per block of frequencies, each one's gather table (:func:`angular_table`)
+        of the receptance rows of the grid columns ``columns``."""
+        laws = self.tire.ops.laws if laws is None else laws
         c = self.tire.grid.n_cols
-        paired = self.partner >= 0
-        blocks = np.empty((BLOCK, self.cos.shape[1], 4, c, c), complex)
+        blocks = np.empty((BLOCK, self.cos.shape[1], 4, columns.size, c), complex)
 
         def fill(k: int, block: np.ndarray) -> None:
-            blocks[: block.size, k] = _blocks_by_sum(self.harmonics[k].receptance(laws, block, inertia), c)
+            blocks[: block.size, k] = blocks_by_sum(self.harmonics[k].receptance(laws, block, inertia), c, columns)
 
         # LAPACK releases the GIL: two harmonics at a time
         with ThreadPoolExecutor(max_workers=2) as workers:
@@ -355,9 +331,18 @@ class EvenFootprint:
                 block = np.asarray(omegas[part], float)
                 with threadpool_limits(1):
                     list(workers.map(fill, range(len(self.harmonics)), repeat(block)))
-                # an even displacement field: h(j, -a) = h(j, a); the mirrored column adds to its partner
-                tables = (_angular(at_frequency, self.cos, self.sin) for at_frequency in blocks[: block.size])
-                yield part, np.stack([self.projection.even(table, paired) for table in tables])
+                yield part, [angular_table(at_frequency, self.cos, self.sin) for at_frequency in blocks[: block.size]]
+
+    def receptances(self, omegas: np.ndarray, laws: dict | None = None, inertia: bool = True):
+        """``comp`` at angular frequencies ``omegas`` (rad/s), in blocks: yields ``(slice, (b, R, R))``.
+
+        ``laws`` default the tire's own (frequency-dependent) compound laws.
+        """
+        paired = self.partner >= 0
+        every_column = np.arange(self.tire.grid.n_cols)
+        for part, tables in self._blocks(omegas, laws, inertia, every_column):
+            # an even displacement field: h(j, -a) = h(j, a); the mirrored column adds to its partner
+            yield part, np.stack([self.projection.even(table, paired) for table in tables])
 
     def footprint(
         self, freqs: np.ndarray, laws: dict | None = None, inertia: bool = True, progress: bool = False
@@ -373,14 +358,15 @@ class EvenFootprint:
         spread = np.sinc(tire.grid.dtheta / (2 * np.pi))
         transfer = (-(np.cos(th) ** 2) * rim.contact[:, col] + np.sin(th) ** 2 * rim.contact[:, c + col]) * spread
         hub = np.empty((freqs.size, col.size), complex)
-        blocks = self.receptances(2 * np.pi * freqs, laws, inertia)
+        lateral, paired = self.lateral, self.partner >= 0
+        blocks = self._blocks(2 * np.pi * freqs, laws, inertia, lateral.columns)
         if progress:
             from tqdm.auto import tqdm
 
             blocks = tqdm(blocks, total=-(-freqs.size // BLOCK), desc="footprint FRF")
-        for part, comps in blocks:
-            for comp, f_index in zip(comps, range(part.start, part.stop)):
-                hub[f_index] = sla.solve(comp, transfer[f_index, self.keep])[self.representative]
+        for part, tables in blocks:
+            comp_rows = np.stack([lateral.projection.even(table, paired) for table in tables])
+            hub[part] = lateral.solve(comp_rows, transfer[part][:, self.keep])[:, self.representative]
         return FootprintFRF(
             freqs=freqs, hub=hub, transfer=transfer, free_rim=rim.free_rim, static=static, n_dynamic=self.n_dynamic
         )
@@ -416,42 +402,6 @@ def footprint_frf(
     f_max = float(freqs.max())
     even = EvenFootprint.build(tire, static, f_max, cutoff_factor * f_max)
     return even.footprint(freqs, inertia=inertia, progress=progress)
-
-
-class _Projection:
-    """Vertical receptance of the contact points from the (r, theta) angular sums.
-
-    ``u_z = -cos(a) u_r + sin(a) u_t`` and a vertical force ``F`` loads ``f_r = -cos(b) F``,
-    ``f_t = sin(b) F``. The trigonometric weights and the positions of each point pair in the
-    sums' gather table (offset, column, column; :func:`_gather_table`) do not depend on
-    frequency: built once.
-    """
-
-    def __init__(self, col, theta, mirror_col, mirror_theta, direct, mirrored, c):
-        self.c = c
-        self.direct = (direct * c + col[:, None]) * c + col[None, :]
-        self.mirrored = (mirrored * c + col[:, None]) * c + mirror_col[None, :]
-        self.weights = [self._weights(theta, theta), self._weights(theta, mirror_theta)]
-
-    @staticmethod
-    def _weights(theta_a, theta_b):
-        ca, sa, cb, sb = np.cos(theta_a), np.sin(theta_a), np.cos(theta_b), np.sin(theta_b)
-        # blocks rr, tt, rt, tr (the gather table's order)
-        return np.stack([np.outer(ca, cb), np.outer(sa, sb), -np.outer(ca, sb), -np.outer(sa, cb)], axis=-1)
-
-    @staticmethod
-    def block(table: np.ndarray, pick: np.ndarray, weights: np.ndarray) -> np.ndarray:
-        """The vertical receptance of the point pairs at positions ``pick`` of ``table`` (n, 8), ``weights`` (.., 4)."""
-        gathered = np.take(table, pick, axis=0).reshape(pick.shape + (4, 2))
-        real = np.einsum("abk,abk->ab", gathered[..., 0], weights)
-        imag = np.einsum("abk,abk->ab", gathered[..., 1], weights)
-        return real + 1j * imag
-
-    def even(self, table: np.ndarray, paired: np.ndarray) -> np.ndarray:
-        """Receptance of an even (fore-aft symmetric) field on the points with theta >= 0."""
-        comp = self.block(table, self.direct, self.weights[0])
-        comp[:, paired] += self.block(table, self.mirrored, self.weights[1])
-        return comp
 
 
 def _high_harmonics(tire: SectionTire, n_dyn: int, f_max: float) -> tuple:

@@ -2,11 +2,19 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 
 from roadnoise_utils.repro import section_stages
-from roadnoise_utils.response.section_footprint import contact_receptance, dynamic_harmonics, footprint_frf
+from roadnoise_utils.response.footprint_points import lateral_split
+from roadnoise_utils.response.section_footprint import (
+    EvenFootprint,
+    contact_receptance,
+    dynamic_harmonics,
+    footprint_frf,
+)
 from roadnoise_utils.tire.section_contact import harmonic_flexibility, vertical_compliance
 from roadnoise_utils.tire.section_dynamics import reduce_harmonic, ritz_error
 from roadnoise_utils.tire.section_static import section_summary, solve_section_static
@@ -85,6 +93,23 @@ def test_footprint_frf_matches_a_direct_harmonic_sum(tire, flat, frf, index, f):
     assert np.abs(comp - comp.T).max() < 1e-10 * np.abs(comp).max()  # (d) reciprocity
     hub = np.linalg.solve(comp, frf.transfer[index])
     assert abs(frf.H_tot[index] / hub.sum() - 1) < 3e-3
+
+
+def test_the_left_right_split_footprint_is_the_plain_solve(tire, flat):
+    """Symmetric and antisymmetric loads solved apart on one point of each lateral pair (from half the
+    receptance's rows) give the plain solve over every point; without a mirror the plain solve is used."""
+    even = EvenFootprint.build(tire, flat, 320.0, 800.0)
+    lateral = even.lateral
+    assert lateral.rows.size < 0.6 * even.keep.size  # the split is on: about half the points
+    assert lateral.columns.max() == (tire.grid.n_cols - 1) // 2  # the left half and the centre column
+    unmirrored = [replace(even.harmonics[0], mirror=None)]
+    plain = replace(even, lateral=lateral_split(tire, flat, even.keep, even.partner, unmirrored))
+    assert np.array_equal(plain.lateral.rows, np.arange(even.keep.size))
+    assert np.array_equal(plain.lateral.partner, plain.lateral.rows)
+    freqs = np.array([0.0, 80.0, 320.0])
+    split, whole = even.footprint(freqs), plain.footprint(freqs)
+    assert np.abs(split.hub - whole.hub).max() < 1e-9 * np.abs(whole.hub).max()
+    np.testing.assert_allclose(split.H_tot, whole.H_tot, rtol=1e-10)
 
 
 def test_moving_hub_stiffness_equals_the_footprint_stiffness_at_rest(frf, flat):
