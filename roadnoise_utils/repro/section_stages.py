@@ -1,21 +1,23 @@
 """Cached stages of the cross-section tire (``[tire] model = "cross-section"``).
 
-===========================  =============================================================
-stage                        caches
-===========================  =============================================================
-:func:`section_static`       :func:`roadnoise_utils.tire.section_static.solve_section_static`
-:func:`section_footprint`    :func:`roadnoise_utils.response.section_footprint.footprint_frf`
-                             (default 0-400 Hz every 1 Hz)
-:func:`section_modal`        :func:`roadnoise_utils.response.section_modal.section_modal_reduction`
-                             on the default sweep
-:func:`frozen_check`         :func:`roadnoise_utils.response.section_modal.frozen_check`
-:func:`quasi_static_cleat`   :func:`roadnoise_utils.response.section_one_sided.section_quasi_static_run`
-                             of a cleat on the drum
-:func:`harmonic_reductions`  :func:`roadnoise_utils.tire.section_stepping.reduce_all` (every harmonic)
-:func:`dynamic_cleat_runs`   :func:`roadnoise_utils.response.section_one_sided.section_dynamic_runs`
-                             of a cleat on the drum: the one-sided run and its frozen twin,
-                             stepped together (:func:`dynamic_cleat` picks one)
-===========================  =============================================================
+=============================  ==========================================================================
+stage                          caches
+=============================  ==========================================================================
+:func:`section_static`         :func:`roadnoise_utils.tire.section_static.solve_section_static`
+:func:`footprint_reductions`   :func:`roadnoise_utils.response.section_footprint.footprint_reductions`
+                               (the harmonics reduced for a band: shared by the loaded states)
+:func:`section_footprint`      :func:`roadnoise_utils.response.section_footprint.footprint_frf`
+                               (default 0-400 Hz every 1 Hz)
+:func:`section_modal`          :func:`roadnoise_utils.response.section_modal.section_modal_reduction`
+                               on the default sweep
+:func:`frozen_check`           :func:`roadnoise_utils.response.section_modal.frozen_check`
+:func:`quasi_static_cleat`     :func:`roadnoise_utils.response.section_one_sided.section_quasi_static_run`
+                               of a cleat on the drum
+:func:`harmonic_reductions`    :func:`roadnoise_utils.tire.section_stepping.reduce_all` (every harmonic)
+:func:`dynamic_cleat_runs`     :func:`roadnoise_utils.response.section_one_sided.section_dynamic_runs`
+                               of a cleat on the drum: the one-sided run and its frozen twin,
+                               stepped together (:func:`dynamic_cleat` picks one)
+=============================  ==========================================================================
 
 :func:`section_tire` (mesh, harmonic matrices and inflation: about half a second) is not cached.
 """
@@ -98,9 +100,24 @@ def section_footprint(
     state = section_static(tire, road, load, drum_radius)
 
     def compute() -> FootprintFRF:
-        return footprint.footprint_frf(build_section_tire(inputs["tire"]), state, freqs, progress=progress)
+        f_max = float(freqs.max())
+        reductions = footprint_reductions(tire, f_max, footprint.CUTOFF_FACTOR * f_max)
+        built = build_section_tire(inputs["tire"])
+        return footprint.footprint_frf(built, state, freqs, progress=progress, reductions=reductions)
 
     return cached(section_footprint, {**inputs, "freqs": freqs}, compute, runs=(footprint.footprint_frf,))
+
+
+def footprint_reductions(tire: SectionTireLike, f_max: float, cutoff: float) -> footprint.FootprintReductions:
+    """Cached :func:`.response.section_footprint.footprint_reductions`: every harmonic reduced for
+    ``0..f_max`` Hz with its modes below ``cutoff`` Hz; shared by the flat road's and the drum's
+    footprints and by the time stepping's modal harmonics (:func:`harmonic_reductions`)."""
+    inputs = {"tire": load_section_tire(tire), "f_max": float(f_max), "cutoff": float(cutoff)}
+
+    def compute() -> footprint.FootprintReductions:
+        return footprint.footprint_reductions(build_section_tire(inputs["tire"]), inputs["f_max"], inputs["cutoff"])
+
+    return cached(footprint_reductions, inputs, compute, runs=(footprint.footprint_reductions,))
 
 
 def tassello_frfs(
@@ -132,13 +149,19 @@ def section_modal(
 
     def compute() -> ModalReduction:
         built = build_section_tire(inputs["tire"])
-        return modal.section_modal_reduction(built, state, visco, **options)
+        reductions = footprint_reductions(tire, *modal.reduction_band(f_band))  # shared by the band's stages
+        return modal.section_modal_reduction(built, state, visco, **options, reductions=reductions)
 
     return cached(
         section_modal,
         {**inputs, **options},
         compute,
-        runs=(modal.section_modal_reduction, footprint.footprint_frf, static_module.solve_section_static),
+        runs=(
+            modal.section_modal_reduction,
+            footprint.footprint_frf,
+            footprint.footprint_reductions,
+            static_module.solve_section_static,
+        ),
     )
 
 
@@ -152,11 +175,14 @@ def frozen_check(
 
     def compute() -> modal.FrozenCheck:
         built = build_section_tire(inputs["tire"])
-        return modal.frozen_check(built, state, options["freqs"], options["reference_frequency"])
+        band = 250.0  # the paper's
+        reductions = footprint_reductions(tire, *modal.reduction_band(band))  # shared by the band's stages
+        return modal.frozen_check(
+            built, state, options["freqs"], options["reference_frequency"], f_band=band, reductions=reductions
+        )
 
-    return cached(
-        frozen_check, {**inputs, **options}, compute, runs=(modal.frozen_check, static_module.solve_section_static)
-    )
+    runs = (modal.frozen_check, footprint.footprint_reductions, static_module.solve_section_static)
+    return cached(frozen_check, {**inputs, **options}, compute, runs=runs)
 
 
 def quasi_static_cleat(
@@ -193,9 +219,11 @@ def harmonic_reductions(tire: SectionTireLike, f_max: float = 400.0) -> list:
     inputs = {"tire": load_section_tire(tire), "f_max": float(f_max)}
 
     def compute() -> list:
-        return stepping.reduce_all(build_section_tire(inputs["tire"]), inputs["f_max"])
+        f_max = inputs["f_max"]
+        shared = footprint_reductions(tire, f_max, stepping.CUTOFF_FACTOR * f_max)  # the same modal harmonics
+        return stepping.reduce_all(build_section_tire(inputs["tire"]), f_max, dynamic=shared.dynamic)
 
-    return cached(harmonic_reductions, inputs, compute, runs=(stepping.reduce_all,))
+    return cached(harmonic_reductions, inputs, compute, runs=(stepping.reduce_all, footprint.footprint_reductions))
 
 
 def dynamic_cleat(

@@ -51,6 +51,8 @@ from .footprint_points import (
 )
 from .frf import FRFResult
 
+#: Harmonics with a mode below ``CUTOFF_FACTOR * f_max`` are reduced with those modes (:func:`footprint_frf`).
+CUTOFF_FACTOR = 2.5
 #: Frequencies per block of the evaluation (memory: block x offsets x (2 columns)^2 complex).
 BLOCK = 16
 
@@ -195,6 +197,44 @@ def _dynamic_reductions(tire: SectionTire, f_max: float, cutoff: float) -> list:
     return reduced
 
 
+@dataclass(frozen=True, eq=False)
+class FootprintReductions:
+    """Every harmonic of a tire reduced for a band: what :meth:`EvenFootprint.build` needs of the tire alone.
+
+    They depend on the tire, the band and the modes' cutoff, not on the loaded state: the flat
+    road's and the drum's footprints (and the time stepping's modal harmonics,
+    :func:`.tire.section_stepping.reduce_all`) share them.
+
+    Attributes
+    ----------
+    f_max, cutoff : float
+        Band and modes' cutoff (Hz).
+    dynamic : list of ReducedHarmonic
+        Harmonics ``0, 1, ...`` with their modes below ``cutoff``, up to the first (``n >= 2``) without one.
+    n_high : ndarray of int
+        The quasi-static harmonics above them.
+    basis : ndarray (n_high, n_samples)
+        Interpolation weights from the sampled quasi-static harmonics to ``n_high``.
+    high : list of ReducedHarmonic
+        The sampled quasi-static harmonics (no modes).
+    """
+
+    f_max: float
+    cutoff: float
+    dynamic: list
+    n_high: np.ndarray
+    basis: np.ndarray
+    high: list
+
+
+def footprint_reductions(tire: SectionTire, f_max: float, cutoff: float) -> FootprintReductions:
+    """Reduce every harmonic for ``0..f_max`` Hz, modes below ``cutoff`` Hz (see the module notes)."""
+    with threadpool_limits(1):
+        dynamic = _dynamic_reductions(tire, f_max, cutoff)
+        n_high, basis, high = _high_harmonics(tire, len(dynamic) - 1, f_max)
+    return FootprintReductions(float(f_max), float(cutoff), dynamic, n_high, basis, high)
+
+
 def _sample_harmonics(first: int, last: int, count: int = 24) -> np.ndarray:
     """Harmonics sampled densely near ``first`` and sparsely towards ``last`` (interpolation nodes)."""
     return np.unique(np.round(np.geomspace(first, last, count)).astype(int))
@@ -283,13 +323,28 @@ class EvenFootprint:
     lateral: LateralSplit
 
     @classmethod
-    def build(cls, tire: SectionTire, static: SectionStaticState, f_max: float, cutoff: float) -> EvenFootprint:
-        """Reduce the harmonics for ``0..f_max`` Hz, modes below ``cutoff`` Hz (see the module notes)."""
+    def build(
+        cls,
+        tire: SectionTire,
+        static: SectionStaticState,
+        f_max: float,
+        cutoff: float,
+        reductions: FootprintReductions | None = None,
+    ) -> EvenFootprint:
+        """Reduce the harmonics for ``0..f_max`` Hz, modes below ``cutoff`` Hz (see the module notes).
+
+        ``reductions``: the tire's :func:`footprint_reductions` for this band and cutoff, if computed before.
+        """
         keep, representative, partner = _mirror_pairs(static)  # before any work: the set must be symmetric
         grid = tire.grid
-        with threadpool_limits(1):
-            dynamic = _dynamic_reductions(tire, f_max, cutoff)
-            n_high, basis, high = _high_harmonics(tire, len(dynamic) - 1, f_max)
+        if reductions is None:
+            reductions = footprint_reductions(tire, f_max, cutoff)
+        elif (reductions.f_max, reductions.cutoff) != (float(f_max), float(cutoff)):
+            raise ValueError(
+                f"reductions are for {reductions.f_max:g} Hz with modes below {reductions.cutoff:g} Hz, "
+                f"not {f_max:g} Hz and {cutoff:g} Hz"
+            )
+        dynamic, n_high, basis, high = reductions.dynamic, reductions.n_high, reductions.basis, reductions.high
         offsets = _offsets(static)
         cos_dyn, sin_dyn = _trig(np.arange(len(dynamic)), offsets, grid.dtheta)
         cos_high, sin_high = _trig(n_high, offsets, grid.dtheta, basis)
@@ -376,9 +431,10 @@ def footprint_frf(
     tire: SectionTire,
     static: SectionStaticState,
     freqs: np.ndarray,
-    cutoff_factor: float = 2.5,
+    cutoff_factor: float = CUTOFF_FACTOR,
     progress: bool = False,
     inertia: bool = True,
+    reductions: FootprintReductions | None = None,
 ) -> FootprintFRF:
     """The footprint's hub-force transfer of a loaded cross-section tire (see the module notes).
 
@@ -396,11 +452,14 @@ def footprint_frf(
     inertia : bool
         ``False``: the quasi-static response (no inertia, moduli at each frequency), the
         residual anchors of the modal reduction.
+    reductions : FootprintReductions, optional
+        The tire's :func:`footprint_reductions` for ``max(freqs)`` and the cutoff, if computed
+        before (e.g. cached: they do not depend on the loaded state).
     """
     freqs = _check_inputs(tire, static, freqs)
     _mirror_pairs(static)  # before any work: the set must be symmetric
     f_max = float(freqs.max())
-    even = EvenFootprint.build(tire, static, f_max, cutoff_factor * f_max)
+    even = EvenFootprint.build(tire, static, f_max, cutoff_factor * f_max, reductions)
     return even.footprint(freqs, inertia=inertia, progress=progress)
 
 

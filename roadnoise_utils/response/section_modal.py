@@ -52,10 +52,12 @@ from .modal_reduction import (
     identify_modes,
     reference_mode,
 )
-from .section_footprint import EvenFootprint, FootprintFRF
+from .section_footprint import EvenFootprint, FootprintFRF, FootprintReductions
 
 #: Free modes are kept up to ``FREE_FACTOR`` times the highest loaded mode the model must carry.
 FREE_FACTOR = 2.5
+#: Quasi-static anchors of the residual flexibility, as fractions of the band (:func:`section_modal_reduction`).
+ANCHORS = (0.0, 0.1, 0.25, 0.5, 1.0, 1.6)
 
 
 @dataclass(frozen=True, eq=False)
@@ -227,11 +229,18 @@ def _eig_by_parity(k_loaded: np.ndarray, parity: np.ndarray) -> tuple[np.ndarray
     return mu, vecs
 
 
-def _synthesis(tire, static, reference_frequency: float, frozen: str, f_band: float, f_top: float):
-    """The reduced harmonics for 0-``f_top`` Hz, the laws frozen at ``reference_frequency`` and the
-    loaded modes they give (free modes to ``FREE_FACTOR * 2 f_band``): ``(even, laws, modes)``."""
+def reduction_band(f_band: float, anchors: tuple[float, ...] = ANCHORS) -> tuple[float, float]:
+    """``(f_top, f_free)`` (Hz) of the reduced harmonics for a band: up to the last anchor, modes to
+    ``FREE_FACTOR * 2 f_band`` (:func:`.section_footprint.footprint_reductions` of the tire)."""
+    return float(anchors[-1]) * f_band, FREE_FACTOR * 2 * f_band
+
+
+def _synthesis(tire, static, reference_frequency: float, frozen: str, f_band: float, f_top: float, reductions=None):
+    """The reduced harmonics for 0-``f_top`` Hz (``reductions`` if given), the laws frozen at
+    ``reference_frequency`` and the loaded modes they give (free modes to ``FREE_FACTOR * 2 f_band``):
+    ``(even, laws, modes)``."""
     f_free = FREE_FACTOR * 2 * f_band
-    even = EvenFootprint.build(tire, static, f_top, f_free)
+    even = EvenFootprint.build(tire, static, f_top, f_free, reductions)
     laws = frozen_laws(tire.ops.laws, 2 * np.pi * reference_frequency, storage_only=frozen == "storage")
     return even, laws, section_loaded_modes(even, laws, f_free)
 
@@ -272,7 +281,8 @@ def section_modal_reduction(
     frozen: str = "complex",
     damping: str = "identified",
     f_band: float = 250.0,
-    anchors: tuple[float, ...] = (0.0, 0.1, 0.25, 0.5, 1.0, 1.6),
+    anchors: tuple[float, ...] = ANCHORS,
+    reductions: FootprintReductions | None = None,
 ) -> ModalReduction:
     """The paper's Fig. 4 procedure on the cross-section tire (see the module notes).
 
@@ -294,6 +304,9 @@ def section_modal_reduction(
         kept to ``FREE_FACTOR * 2 f_band``, every loaded mode they give kept).
     anchors : tuple of float
         Quasi-static anchor frequencies as fractions of ``f_band``, 0 first.
+    reductions : FootprintReductions, optional
+        The tire's :func:`.section_footprint.footprint_reductions` for :func:`reduction_band`
+        of this band and anchors, if computed before (they do not depend on the loaded state).
     """
     check_options(frozen, damping, f_band)
     if not isinstance(visco, FRFResult):
@@ -303,7 +316,9 @@ def section_modal_reduction(
         raise ValueError("anchors must start at 0 and increase")
     ident = identify_modes(visco.freqs, visco.H_tot, f_max=f_band)
     reference_frequency = reference_mode(ident, reference_frequency)
-    even, laws, modes = _synthesis(tire, static, reference_frequency, frozen, f_band, float(anchor_freqs[-1]))
+    even, laws, modes = _synthesis(
+        tire, static, reference_frequency, frozen, f_band, float(anchor_freqs[-1]), reductions
+    )
     if damping == "identified":
         eigenvalues, source = apply_identified_damping(modes.eigenvalues, modes.hub_gain, ident, frozen, f_band)
     else:
@@ -348,18 +363,21 @@ def frozen_check(
     reference_frequency: float,
     storage: bool = False,
     f_band: float = 250.0,
+    reductions: FootprintReductions | None = None,
 ) -> FrozenCheck:
     """The frozen model two ways at ``freqs`` (Hz): by the synthesis and solved directly.
 
     Every law frozen at ``reference_frequency`` (Hz), every loss the model's own (no
     identification), one static anchor. Both use the same reduced harmonics (those of
-    :func:`section_modal_reduction` with this ``f_band``), so they differ only by the inertia of
-    what the residual flexibility stands for: the check of the synthesis.
+    :func:`section_modal_reduction` with this ``f_band``; ``reductions`` if given, see
+    :func:`reduction_band`), so they differ only by the inertia of what the residual flexibility
+    stands for: the check of the synthesis.
     """
     freqs = np.asarray(freqs, float)
     frozen = "storage" if storage else "complex"
     check_options(frozen, "identified", f_band)
-    even, laws, modes = _synthesis(tire, static, float(reference_frequency), frozen, f_band, 1.6 * f_band)
+    f_top, _ = reduction_band(f_band)
+    even, laws, modes = _synthesis(tire, static, float(reference_frequency), frozen, f_band, f_top, reductions)
     anchor = even.footprint(np.zeros(1), laws=laws, inertia=False)
     source = np.full(modes.eigenvalues.size, "frozen model", dtype=object)
     model = _model_of(modes, even, anchor, modes.eigenvalues, source, reference_frequency, frozen)

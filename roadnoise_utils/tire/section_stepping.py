@@ -79,7 +79,9 @@ class SteppedHarmonic:
     parity: int = 0
 
 
-def reduce_all(tire: SectionTire, f_max: float, cutoff_factor: float = CUTOFF_FACTOR) -> list[SteppedHarmonic]:
+def reduce_all(
+    tire: SectionTire, f_max: float, cutoff_factor: float = CUTOFF_FACTOR, dynamic: list | None = None
+) -> list[SteppedHarmonic]:
     """Every harmonic ``0..N`` reduced for ``0..f_max`` Hz and made passive (:func:`passive_part`).
 
     With its modes up to the first ``n >= 2`` without one below ``cutoff_factor * f_max``; the
@@ -87,12 +89,19 @@ def reduce_all(tire: SectionTire, f_max: float, cutoff_factor: float = CUTOFF_FA
     third of the cost: the frozen check is unchanged to 1e-4). A left-right symmetric harmonic
     (:func:`.section_dynamics.lateral_mirror`) gives its symmetric and antisymmetric halves,
     which its matrices do not couple: stepping them apart reads half the operators' entries.
+
+    ``dynamic``: the harmonics with their modes, reduced before for this band and cutoff
+    (:attr:`.response.section_footprint.FootprintReductions.dynamic`: the same reductions).
     """
-    out, dynamic, mirror = [], True, lateral_mirror(tire.ops)
+    out, modal, mirror = [], True, lateral_mirror(tire.ops)
+    given = {} if dynamic is None else {red.n: red for red in dynamic}
     for n in range(tire.harmonics + 1):
-        cutoff = cutoff_factor * f_max if dynamic else None
-        red = reduce_harmonic(tire.ops, tire.grid.dofs, n, f_max, cutoff, both_ends=dynamic, mirror=mirror)
-        dynamic = dynamic and not (n >= 2 and red.n_modes == 0)
+        cutoff = cutoff_factor * f_max if modal else None
+        if modal and n in given:
+            red = given[n]
+        else:
+            red = reduce_harmonic(tire.ops, tire.grid.dofs, n, f_max, cutoff, both_ends=modal, mirror=mirror)
+        modal = modal and not (n >= 2 and red.n_modes == 0)
         for parity, half in parity_halves(red):
             projected, dropped = passive_part(half, list(tire.ops.scaled))
             out.append(SteppedHarmonic(n, projected, red.n_modes, dropped, parity))

@@ -133,3 +133,34 @@ def test_bad_input_is_refused(stepper_and_static):
         HarmonicStepper(tire, DT, section_stages.harmonic_reductions(TIRE)[:-1])
     with pytest.raises(ValueError, match="spectral_radius"):
         HarmonicStepper(tire, DT, section_stages.harmonic_reductions(TIRE), spectral_radius=1.5)
+
+
+def test_the_stepping_reuses_the_footprints_modal_harmonics():
+    """The stage's harmonics, built from the footprint's reductions of its modal harmonics (the same
+    band and cutoff), are those reduce_all computes alone: each harmonic's halves reduced afresh have
+    the same modes, dropped directions and static compliance at the contact DOF (1e-9; ARPACK's start
+    vectors rotate the bases, not the spaces). The footprint refuses reductions of another band."""
+    from roadnoise_utils.response.section_footprint import EvenFootprint, FootprintReductions
+    from roadnoise_utils.tire.section_dynamics import lateral_mirror, reduce_harmonic
+    from roadnoise_utils.tire.section_stepping import CUTOFF_FACTOR, parity_halves
+
+    tire = section_stages.section_tire(TIRE)
+    reduced = section_stages.harmonic_reductions(TIRE, 400.0)
+    names, mirror = list(tire.ops.scaled), lateral_mirror(tire.ops)
+
+    def compliance(p):
+        return p.contact.T @ np.linalg.solve(p.gas + sum(p.compounds.values()), p.contact)
+
+    for n in (0, 1, 9):
+        red = reduce_harmonic(tire.ops, tire.grid.dofs, n, 400.0, CUTOFF_FACTOR * 400.0, mirror=mirror)
+        expected = [passive_part(half, names) for _, half in parity_halves(red)]
+        got = [h for h in reduced if h.n == n]
+        assert [h.n_modes for h in got] == [red.n_modes] * len(expected) and red.n_modes > 0
+        assert [h.dropped for h in got] == [dropped for _, dropped in expected]
+        for h, (projected, _) in zip(got, expected):
+            reference = compliance(projected)
+            assert np.abs(compliance(h.projected) - reference).max() < 1e-9 * np.abs(reference).max()
+    static = section_stages.section_static(TIRE, "flat")
+    other = FootprintReductions(60.0, 150.0, [], np.zeros(0, int), np.zeros((0, 0)), [])
+    with pytest.raises(ValueError, match="reductions are for 60 Hz"):
+        EvenFootprint.build(tire, static, 80.0, CUTOFF_FACTOR * 80.0, other)
