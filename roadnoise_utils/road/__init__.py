@@ -3,10 +3,10 @@
 ``input`` turns any road (a 2D profile or a 3D height field) into tassello displacement
 histories through each tassello's shape-function kernel (``kernels``); ``cleat`` is the drum
 test's obstacle, ``textures`` the ISO 8608 + megatexture spectra and seeded random roads,
-``files`` measured roads read from CSV.
+``files`` measured roads read from CSV, ``two_track`` the four wheels of a vehicle on one road.
 """
 
-from . import cleat, files, input, kernels, textures
+from . import cleat, files, input, kernels, textures, two_track
 from .cleat import cleat_profile
 from .files import load_road_file
 from .input import RoadInput, contact_tracks, profile_input, sample_rate_for, texture_input
@@ -34,4 +34,5 @@ __all__ = [
     "tassello_kernels",
     "texture_input",
     "textures",
+    "two_track",
 ]
