@@ -230,22 +230,17 @@ def full_car_statespace(car: FullCar, tire_hub_mass: float = 0.0) -> control.Sta
             generalised = sign * inv_m @ row
             a_mat[n : 2 * n, :n] += np.outer(generalised, force_on_a[:-1])
             a_mat[n : 2 * n, p] += generalised * force_on_a[-1]
+    hubs = np.array([rows[f"{c}.{corners[c].hub}"] for c in CORNERS])  # (4, n): each hub's DOF row
+    mounts = np.array([rows[f"{c}.{corners[c].upper_mount}"] for c in CORNERS])
     b_mat = np.zeros((2 * n + m_e, 4))
-    hubs = [rows[f"{c}.{corners[c].hub}"] for c in CORNERS]
-    mounts = [rows[f"{c}.{corners[c].upper_mount}"] for c in CORNERS]
-    for j, hub in enumerate(hubs):
-        b_mat[n : 2 * n, j] = inv_m @ hub
-    displacement = np.zeros((n, 2 * n + m_e))
-    displacement[:, :n] = np.eye(n)
+    b_mat[n : 2 * n] = inv_m @ hubs.T  # a unit force on hub j
+    displacement = np.hstack([np.eye(n), np.zeros((n, n + m_e))])
+    acceleration, acceleration_d = a_mat[n : 2 * n], b_mat[n : 2 * n]
     c_mat = np.vstack(
-        [np.array(hubs) @ displacement[:, :]]
-        + [np.array(hubs) @ a_mat[n : 2 * n]]
-        + [np.array(mounts) @ a_mat[n : 2 * n]]
-        + [displacement[:3], a_mat[n : n + 3]]
+        [hubs @ displacement, hubs @ acceleration, mounts @ acceleration, displacement[:3], acceleration[:3]]
     )
     d_mat = np.vstack(
-        [np.zeros((4, 4)), np.array(hubs) @ b_mat[n : 2 * n], np.array(mounts) @ b_mat[n : 2 * n]]
-        + [np.zeros((3, 4)), b_mat[n : n + 3]]
+        [np.zeros((4, 4)), hubs @ acceleration_d, mounts @ acceleration_d, np.zeros((3, 4)), acceleration_d[:3]]
     )
     outputs = [f"{q}_{c}" for q in ("z_hub", "a_hub", "a_mount") for c in CORNERS] + list(BODY_OUTPUTS)
     return control.ss(a_mat, b_mat, c_mat, d_mat, inputs=[f"F_tire_{c}" for c in CORNERS], outputs=outputs)
