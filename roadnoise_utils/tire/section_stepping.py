@@ -225,6 +225,8 @@ class _Group:
         self.acceleration = np.zeros_like(self.q)
         self.unbalance = np.zeros_like(self.q)  # external minus internal force (M = I: the inertia force)
         self.states = {c: np.zeros((branches[c].weights.size, self.q.size)) for c in names}
+        self.branches = branches
+        self.history = {c: np.zeros(self.q.size) for c in names}  # the next step's, kept by each update
         self.stacked = np.zeros((h_count, self.operator.shape[2], 2 * runs))  # the products' right-hand side
 
     def flexibility(self) -> np.ndarray:
@@ -238,6 +240,7 @@ class _Group:
             array[:] = 0.0
         for c in self.names:
             self.states[c][:] = self.q.ravel()[None, :]
+            self.history[c] = self.branches[c].history(self.states[c], self.q.ravel())
 
 
 class HarmonicStepper:
@@ -386,10 +389,10 @@ class HarmonicStepper:
         self._free = []
         for g in self.groups:
             ahead = g.q + dt * g.velocity + (0.5 - a.beta) * dt**2 * g.acceleration
-            size, flat = g.size, g.q.ravel()
+            size = g.size
             g.stacked[:, :size] = inertia * ahead - a.alpha_m * g.acceleration + a.alpha_f * g.unbalance
             for b, c in enumerate(g.names, start=1):
-                g.stacked[:, b * size : (b + 1) * size] = self.branches[c].history(g.states[c], flat).reshape(g.q.shape)
+                g.stacked[:, b * size : (b + 1) * size] = g.history[c].reshape(g.q.shape)
             self._free.append(np.matmul(g.operator, g.stacked))
         return self.vertical(self._contact_values(self._free))
 
@@ -410,7 +413,7 @@ class HarmonicStepper:
             )
             old, new = g.q.ravel(), q_new.ravel()
             for c in g.names:
-                self.branches[c].update_in_place(g.states[c], old, new)
+                self.branches[c].update_in_place(g.states[c], old, new, g.history[c])
             g.q, g.acceleration = q_new, acceleration
             for e in g.moving:  # the inertia at t_{n+1} is the unbalance (the scheme's acceleration lags it)
                 hub -= g.momentum[e] @ g.unbalance[e, :, 0::2]

@@ -44,5 +44,9 @@ def test_prony_states_updated_in_place_as_by_the_formula():
     expected = branches.update(states, old, new)
     branches.update_in_place(states, old, new)
     assert np.abs(states - expected).max() < 1e-14
+    fused, history = branches.update(expected, new, old), np.full(50, np.nan)  # a second step, with its history
+    branches.update_in_place(states, new, old, history)
+    assert np.abs(states - fused).max() < 1e-14
+    assert np.abs(history - branches.history(fused, old)).max() < 1e-13
     with pytest.raises(ValueError, match="C-contiguous"):
         branches.update_in_place(np.asfortranarray(states), old, new)
