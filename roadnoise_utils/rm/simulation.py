@@ -32,6 +32,8 @@ from ..road.input import RoadInput
 
 #: Threads that run the IIR sections (scipy's lfilter releases the GIL).
 THREADS = 2
+#: Modes of :func:`response` stepped and summed together (their histories are held at once).
+MODES_AT_ONCE = 16
 
 
 @dataclass(frozen=True)
@@ -235,10 +237,22 @@ def simulate(system: control.StateSpace | ModalSections, road: RoadInput) -> Sim
     return SimulationResult(t=road.t, distance=road.distance, force=_run(sections, u, dt), road=road)
 
 
+def _modal_states(pole: complex, drive: np.ndarray, dt: float) -> np.ndarray:
+    """Exact FOH history of ``x' = p x + v`` from rest for the samples ``drive`` of ``v`` (complex or real)."""
+    e, g0, g1 = foh_coefficients(pole, dt)
+    if pole.imag == 0.0:
+        e, g0, g1, drive = e.real, g0.real, g1.real, drive.real
+    # x_k = e x_{k-1} + g0 v_{k-1} + g1 v_k with x_0 = 0: the transposed direct form started at -g1 v_0
+    return lfilter([g1, g0], [1.0, -e], drive, zi=[-g1 * drive[0]])[0]
+
+
 def response(system: control.StateSpace, t: np.ndarray, u: np.ndarray) -> np.ndarray:
     """All outputs (n_outputs, n_samples) of any stable LTI model for inputs ``u`` (FOH, zero state).
 
-    The same method as :func:`simulate`, one set of modal sections per output.
+    The method of :func:`simulate` for a model with many inputs and outputs: each independent
+    block of the state matrix is diagonalised once, every mode (the upper member of a conjugate
+    pair) is driven by its combination of the inputs and stepped once (exact FOH recursion),
+    and the outputs are the modes' real parts weighted by the output matrix.
     """
     system = as_continuous_statespace(system)
     u = np.asarray(u, dtype=float)
@@ -246,4 +260,30 @@ def response(system: control.StateSpace, t: np.ndarray, u: np.ndarray) -> np.nda
         u = u[None, :]
     t = np.asarray(t, dtype=float)
     dt = _check_inputs(u, t, system.ninputs)
-    return np.array([_run(modal_sections(system[k, :]), u, dt) for k in range(system.noutputs)])
+    a, b, c, d = (np.asarray(m, dtype=float) for m in (system.A, system.B, system.C, system.D))
+    out = d @ u
+    n = a.shape[0]
+    pattern = sp.csr_matrix(np.abs(a) > 0) + sp.identity(n, format="csr")
+    n_blocks, labels = connected_components(pattern, directed=False)
+    unstable = []
+    for block in range(n_blocks):
+        idx = np.nonzero(labels == block)[0]
+        lam, vec = np.linalg.eig(a[np.ix_(idx, idx)])
+        b_modal, c_modal = np.linalg.solve(vec, b[idx, :]), c[:, idx] @ vec
+        scale = max(np.max(np.abs(lam)), 1.0)
+        kept = np.nonzero(lam.imag >= -1e-12 * scale)[0]  # a conjugate pair's upper member carries both
+        pair = np.abs(lam[kept].imag) > 1e-12 * scale
+        poles = np.where(pair, lam[kept], lam[kept].real)
+        unstable += list(poles[poles.real > 0])
+        weights = c_modal[:, kept] * np.where(pair, 2.0, 1.0)
+        for first in range(0, kept.size, MODES_AT_ONCE):  # bounded memory: a few modes' histories at a time
+            part = slice(first, first + MODES_AT_ONCE)
+            drives = b_modal[kept[part]] @ u
+            states = np.array([_modal_states(complex(p), v, dt) for p, v in zip(poles[part], drives)])
+            out += (weights[:, part] @ states).real
+    if unstable:
+        guards.warn(
+            f"the model has {len(unstable)} unstable pole(s) (largest real part {max(p.real for p in unstable):.3g} "
+            "1/s): its response grows without bound"
+        )
+    return out

@@ -153,9 +153,11 @@ def _grid(length: float, step: float, n_tracks: int = 1) -> tuple[int, np.ndarra
     length = guards.real("length", length, 10 * step, lo_open=True, unit="m (more than 10 steps)")
     n = int(np.ceil(length / step))
     n += n % 2
-    # heights, complex coefficients and the coherence factors of every wavenumber
+    # heights, white and coherent complex amplitudes; one block of coherence matrices and factors
     guards.check_memory(
-        8.0 * n * n_tracks * (3 + n_tracks), f"a road of {n} samples x {n_tracks} tracks", "length/step"
+        8.0 * n * n_tracks * 6 + 32.0 * FIELD_BLOCK * n_tracks**2,
+        f"a road of {n} samples x {n_tracks} tracks",
+        "length/step",
     )
     return n, np.fft.rfftfreq(n, step)
 
@@ -255,9 +257,60 @@ def coherence(spectrum: RoadSpectrum, n: np.ndarray, separation: float) -> np.nd
     """Coherence of two parallel tracks ``separation`` m apart on an isotropic surface (-)."""
     nu = spectrum.local_exponent(n) / 2.0
     x = 2 * np.pi * np.asarray(n, float) * abs(separation)
+    value = np.zeros(x.shape)
+    # beyond NEGLIGIBLE_X the coherence is below 1e-17 for every exponent of a road (w <= 5)
+    near = x < NEGLIGIBLE_X
     with np.errstate(invalid="ignore", over="ignore"):
-        value = x**nu * kv(nu, x) / (2 ** (nu - 1) * gamma_fn(nu))
+        value[near] = x[near] ** nu[near] * kv(nu[near], x[near]) / (2 ** (nu[near] - 1) * gamma_fn(nu[near]))
     return np.where(x == 0, 1.0, np.nan_to_num(value, nan=0.0))
+
+
+#: Coherence argument :math:`x = 2\pi n b` beyond which the tracks are independent (the
+#: coherence is below 1e-17 for every exponent :math:`w \le 5`).
+NEGLIGIBLE_X = 50.0
+#: Coherence below which two groups of tracks are factored apart (the 1e-10 regularisation of
+#: :func:`generate_field` is a thousand times larger).
+INDEPENDENT = 1e-13
+#: Wavenumbers per block of :func:`generate_field` (bounds its memory: 44 tracks -> 32 MB a block).
+FIELD_BLOCK = 2048
+
+
+def _coherence_factor(coh: np.ndarray) -> np.ndarray:
+    """A square root ``L`` of each coherence matrix (freqs, tracks, tracks), ``L L^T = coh``.
+
+    At long waves the matrix is all ones (singular): a 1e-10 diagonal (an independent part of
+    relative variance 1e-10) keeps Cholesky defined; failing that, the clipped eigenvalues.
+    """
+    try:
+        return np.linalg.cholesky(coh + 1e-10 * np.eye(coh.shape[-1]))
+    except np.linalg.LinAlgError:
+        lam, vec = np.linalg.eigh(coh)
+        return vec * np.sqrt(np.clip(lam, 0.0, None))[:, None, :]
+
+
+def _correlated(spectrum: RoadSpectrum, freqs: np.ndarray, y: np.ndarray, white: np.ndarray) -> np.ndarray:
+    """White amplitudes (freqs, tracks) made coherent across the tracks at ``y``, block by block of wavenumbers.
+
+    Groups of tracks whose mutual coherence is below :data:`INDEPENDENT` over a block (the two
+    wheels of an axle above a few cycles/m) are factored apart: the same factor to that level,
+    at a fraction of the cost.
+    """
+    from scipy.sparse.csgraph import connected_components
+
+    sep = np.round(np.abs(y[:, None] - y[None, :]), 12)
+    unique, index = np.unique(sep, return_inverse=True)
+    index = index.reshape(sep.shape)
+    out = np.empty_like(white)
+    for first in range(0, freqs.size, FIELD_BLOCK):
+        block = slice(first, first + FIELD_BLOCK)
+        table = np.array([coherence(spectrum, freqs[block], b) for b in unique])  # (separations, block)
+        coupled = table.max(axis=1)[index] > INDEPENDENT
+        count, label = connected_components(coupled, directed=False)
+        for group in range(count):
+            tracks = np.nonzero(label == group)[0]
+            coh = np.moveaxis(table[index[np.ix_(tracks, tracks)]], -1, 0)  # (block, k, k)
+            out[block, tracks] = np.einsum("fij,fj->fi", _coherence_factor(coh), white[block, tracks])
+    return out
 
 
 def generate_field(spectrum: RoadSpectrum, length: float, step: float, y: np.ndarray, seed: int) -> RoadProfile:
@@ -278,21 +331,9 @@ def generate_field(spectrum: RoadSpectrum, length: float, step: float, y: np.nda
     _check_length(spectrum, length)
     rng = np.random.default_rng(seed)
     g = spectrum.psd(freqs)
-    sep = np.round(np.abs(y[:, None] - y[None, :]), 12)
-    unique, index = np.unique(sep, return_inverse=True)
-    table = np.array([coherence(spectrum, freqs, b) for b in unique])  # (separations, freqs)
-    coh = table[index.reshape(sep.shape)]  # (tracks, tracks, freqs)
-    # square root of each frequency's coherence matrix; at long waves it is all ones (singular), so
-    # a 1e-10 diagonal (an independent part of relative variance 1e-10) keeps Cholesky defined
-    cov = np.moveaxis(coh, -1, 0)
-    try:
-        factor = np.linalg.cholesky(cov + 1e-10 * np.eye(y.size))
-    except np.linalg.LinAlgError:
-        lam, vec = np.linalg.eigh(cov)
-        factor = vec * np.sqrt(np.clip(lam, 0.0, None))[:, None, :]
     white = (rng.standard_normal((freqs.size, y.size)) + 1j * rng.standard_normal((freqs.size, y.size))) / np.sqrt(2)
     # complex amplitude of each track, E|c|^2 = 2 G dn, so each track's variance per bin is G dn
-    coeff = np.einsum("fij,fj->fi", factor, white) * np.sqrt(2.0 * g / (n * step))[:, None]
+    coeff = _correlated(spectrum, freqs, y, white) * np.sqrt(2.0 * g / (n * step))[:, None]
     z = np.fft.irfft(0.5 * n * coeff.T, n, axis=1)
     return RoadProfile(s=np.arange(n) * step, y=y, z=z, spectrum=spectrum, seed=int(seed))
 

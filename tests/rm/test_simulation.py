@@ -29,6 +29,27 @@ def test_simulation_handles_a_nonzero_first_sample(drum_tire):
     assert np.allclose(ru.simulate(sections, road).force, reference, rtol=0, atol=1e-9 * np.abs(reference).max())
 
 
+def test_many_input_many_output_response_equals_python_control():
+    """``response`` (each mode stepped once for all inputs and outputs) equals ``forced_response`` on a
+    random stable model with real poles, conjugate pairs, two independent blocks and a feedthrough."""
+    from roadnoise_utils.rm.simulation import response
+
+    rng = np.random.default_rng(4)
+    blocks = []
+    for n in (5, 3):
+        q = rng.standard_normal((n, n))
+        blocks.append(q - (np.abs(np.linalg.eigvals(q)).max() + 0.5) * np.eye(n))  # stable, mixed poles
+    a = np.block([[blocks[0], np.zeros((5, 3))], [np.zeros((3, 5)), blocks[1]]]) * 200.0
+    assert np.any(np.linalg.eigvals(a).imag != 0) and np.any(np.linalg.eigvals(a).imag == 0)
+    system = control.ss(a, rng.standard_normal((8, 3)), rng.standard_normal((4, 8)), rng.standard_normal((4, 3)))
+    t = np.arange(600) / 4000.0
+    u = np.cumsum(rng.standard_normal((3, t.size)), axis=1) + 1.0  # nonzero at the first sample
+    reference = control.forced_response(system, T=t, U=u).outputs
+    fast = response(system, t, u)
+    assert fast.shape == reference.shape
+    assert np.abs(fast - reference).max() <= 1e-9 * np.abs(reference).max()
+
+
 def test_foh_coefficients_series_and_closed_form_agree():
     dt = 1e-4
     for pole in (-1.0 + 0j, -50 + 2j * np.pi * 80, -0.01 + 2000j):

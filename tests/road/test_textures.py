@@ -52,6 +52,36 @@ def test_3d_tracks_have_the_target_coherence():
     assert ru.textures.coherence(spectrum, np.array([0.0]), 0.1)[0] == pytest.approx(1.0)
 
 
+def test_field_factored_by_blocks_and_groups_equals_the_whole_factor(monkeypatch):
+    """Two wheels' tracks 1.5 m apart, factored block by block of wavenumbers and apart once they
+    decouple, equal the field from one coherence matrix over all tracks and wavenumbers (1e-12)."""
+    from scipy.special import gamma as gamma_fn
+    from scipy.special import kv
+
+    from roadnoise_utils.road import textures
+
+    spectrum = ru.textures.load_texture("rough")
+    y = np.array([-0.78, -0.75, -0.72, 0.72, 0.75, 0.78])
+    monkeypatch.setattr(textures, "FIELD_BLOCK", 500)  # several blocks, the first ones coupled
+    field = ru.textures.generate_field(spectrum, 60.0, 0.004, y, seed=5)
+    # the reference: the formula of the module docstring, no cut-off, one Cholesky per wavenumber
+    n, freqs = textures._grid(60.0, 0.004, y.size)
+    rng = np.random.default_rng(5)
+    white = (rng.standard_normal((freqs.size, y.size)) + 1j * rng.standard_normal((freqs.size, y.size))) / np.sqrt(2)
+    nu = spectrum.local_exponent(freqs)[:, None, None] / 2.0
+    x = 2 * np.pi * freqs[:, None, None] * np.abs(y[:, None] - y[None, :])[None]
+    with np.errstate(invalid="ignore", over="ignore"):
+        gamma = np.nan_to_num(x**nu * kv(nu, x) / (2 ** (nu - 1) * gamma_fn(nu)), nan=0.0)
+    gamma[x == 0] = 1.0
+    factor = np.linalg.cholesky(gamma + 1e-10 * np.eye(y.size))
+    coeff = np.einsum("fij,fj->fi", factor, white) * np.sqrt(2.0 * spectrum.psd(freqs) / (n * 0.004))[:, None]
+    reference = np.fft.irfft(0.5 * n * coeff.T, n, axis=1)
+    assert np.abs(field.z - reference).max() < 1e-12 * np.abs(reference).max()
+    # both paths were taken: the wheels are coupled in the first block and apart in the later ones
+    assert textures.coherence(spectrum, freqs[:500], 1.44).max() > textures.INDEPENDENT
+    assert textures.coherence(spectrum, freqs[500:], 1.44).max() < textures.INDEPENDENT
+
+
 def test_bad_road_inputs(flat):
     with pytest.raises(ValueError, match="reference_psd"):
         ru.textures.RoadSpectrum("bad", -1e-6, 2.0, 2.0, 1.5, 0.05, 50.0)

@@ -103,10 +103,11 @@ def test_the_coupled_car_is_stable_and_its_delay_notches_are_at_kV_over_L(car, c
 
 def test_time_and_frequency_domain_agree_per_octave_on_a_2d_road(car, car_model):
     """The four wheels on a 2-D road, rear delayed, simulated in time; band powers of hub, top-mount
-    and body accelerations within 20 % of the frequency-domain prediction per octave, 40-250 Hz (as
-    the quarter car). Open (issue 15 note): the 20-40 Hz octave of the body-side outputs falls short
-    of the prediction (0.68 at the rear top mount, 0.80 in heave) at 8 s and at 24 s alike, so it is
-    no estimation noise; the hub's (0.85-0.91) is as the quarter car's."""
+    and body accelerations within 20 % of the frequency-domain prediction per octave, 20-250 Hz.
+
+    The prediction is compared as the Welch estimate sees it (:func:`.spectra.expected_psd`): on
+    the raw 1 Hz PSD the steep body spectra of 20-40 Hz read 0.68 (rear top mount) to 0.80
+    (heave), an artefact of the window's leakage and of rectangle sums, not of the model."""
     model, static, fits, _ = car_model
     spectrum = ru.textures.load_texture("rough")
     speed, duration = 30.0, 8.0
@@ -121,12 +122,13 @@ def test_time_and_frequency_domain_agree_per_octave_on_a_2d_road(car, car_model)
         inputs["FL"].u[:, :-lag], inputs["RL"].u[:, lag:], rtol=0, atol=1e-9 * np.abs(inputs["RL"].u).max()
     )
     np.testing.assert_array_equal(inputs["FL"].u, inputs["FR"].u)
-    fc = np.arange(2.0, 251.0)
+    fc = np.arange(0.0, 300.0, 0.1)
     predicted = full_car.predicted_psd_2d(fc, fits.responses(fc), static, spectrum, speed, model, car.wheelbase)
-    bands = [(40, 80), (80, 160), (160, 250)]  # 20-40 Hz: see the docstring
+    bands = [(20, 40), (40, 80), (80, 160), (160, 250)]
     for name in ("a_hub_FL", "a_mount_RR", "a_heave", "a_pitch"):
         measured = ru.vehicle.spectra.psd(run.outputs[name], run.sample_rate)
-        ratios = ru.vehicle.spectra.band_power_ratios(measured, fc, predicted[name], bands)
+        bins, expected = ru.vehicle.spectra.expected_psd(fc, predicted[name], run.sample_rate)
+        ratios = ru.vehicle.spectra.band_power_ratios(measured, bins, expected, bands)
         assert np.all((ratios > 0.8) & (ratios < 1.2)), (name, ratios)
     assert np.abs(run.outputs["roll"]).max() < 1e-7 * np.abs(run.outputs["pitch"]).max()  # 4e-9: round-off
 
