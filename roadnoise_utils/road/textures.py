@@ -295,13 +295,16 @@ def _correlated(spectrum: RoadSpectrum, freqs: np.ndarray, y: np.ndarray, white:
     wheels of an axle above a few cycles/m) are factored apart: the same factor to that level,
     at a fraction of the cost.
     """
+    from concurrent.futures import ThreadPoolExecutor
+
     from scipy.sparse.csgraph import connected_components
 
     sep = np.round(np.abs(y[:, None] - y[None, :]), 12)
     unique, index = np.unique(sep, return_inverse=True)
     index = index.reshape(sep.shape)
     out = np.empty_like(white)
-    for first in range(0, freqs.size, FIELD_BLOCK):
+
+    def fill(first: int) -> None:
         block = slice(first, first + FIELD_BLOCK)
         table = np.array([coherence(spectrum, freqs[block], b) for b in unique])  # (separations, block)
         coupled = table.max(axis=1)[index] > INDEPENDENT
@@ -310,6 +313,10 @@ def _correlated(spectrum: RoadSpectrum, freqs: np.ndarray, y: np.ndarray, white:
             tracks = np.nonzero(label == group)[0]
             coh = np.moveaxis(table[index[np.ix_(tracks, tracks)]], -1, 0)  # (block, k, k)
             out[block, tracks] = np.einsum("fij,fj->fi", _coherence_factor(coh), white[block, tracks])
+
+    # the blocks are independent and their numerics release the GIL: two threads (the CI machine's 2 cores)
+    with ThreadPoolExecutor(2) as pool:
+        list(pool.map(fill, range(0, freqs.size, FIELD_BLOCK)))
     return out
 
 

@@ -8,10 +8,11 @@ import numpy as np
 import pytest
 
 import roadnoise_utils as ru
+from roadnoise_utils.experiments.whole_car import _grounded, _with_heavy_body
 from roadnoise_utils.rm.simulation import modal_sections
 from roadnoise_utils.road import two_track
 from roadnoise_utils.vehicle import full_car
-from roadnoise_utils.vehicle.quarter_car import QuarterCar, vehicle_statespace
+from roadnoise_utils.vehicle.quarter_car import vehicle_statespace
 
 CAR = "midsize_195_65R15_car"
 FREQS = np.array([5.0, 50.0, 120.0, 240.0])
@@ -22,30 +23,10 @@ def car():
     return full_car.load_full_vehicle(CAR)
 
 
-def _heavy(car: full_car.FullCar, factor: float) -> full_car.FullCar:
-    """The car with its body ``factor`` times heavier, past the file ranges (a limit check, not a car)."""
-    out = object.__new__(full_car.FullCar)
-    for field in dataclasses.fields(full_car.FullCar):
-        object.__setattr__(out, field.name, getattr(car, field.name))
-    body = full_car.Body(*(factor * getattr(car.body, f.name) for f in dataclasses.fields(full_car.Body)))
-    object.__setattr__(out, "body", body)
-    return out
-
-
-def _grounded(corner: QuarterCar) -> QuarterCar:
-    """The quarter car with its body held (an infinitely heavy body)."""
-    elements = tuple(
-        dataclasses.replace(e, a="ground" if e.a == "body" else e.a, b="ground" if e.b == "body" else e.b)
-        for e in corner.elements
-    )
-    masses = {k: v for k, v in corner.masses.items() if k != "body"}
-    return QuarterCar(corner.name, corner.tire, masses, elements, corner.hub, corner.upper_mount)
-
-
 def test_an_infinitely_heavy_body_leaves_each_corner_a_quarter_car(car):
     """With the body 1e9 times heavier each corner is its quarter car on a held body (1e-7) and the
     corners no longer feel each other (1e-10)."""
-    response = full_car.full_car_statespace(_heavy(car, 1e9))(2j * np.pi * FREQS)
+    response = full_car.full_car_statespace(_with_heavy_body(car, 1e9))(2j * np.pi * FREQS)
     for j, name in enumerate(full_car.CORNERS):
         quarter = vehicle_statespace(_grounded(car.corner(name)))(2j * np.pi * FREQS)
         for row, q_row in ((j, 0), (4 + j, 1), (8 + j, 2)):  # z_hub, a_hub, a_mount of this corner
