@@ -11,6 +11,7 @@ experiment                     what it runs                                     
 :func:`quarter_car`            the corner on the road test, spectra              07
 :func:`calibration_table`      the tire against its calibration targets          01
 :func:`band_extension`         the chain at 0-250 and 0-400 Hz, cleat and road   10
+:func:`whole_car_run`          the whole car on a 3-D road, spectra, checks       11
 =============================  ================================================  ==========
 
 ``*_conditions`` functions resolve a test's defaults (an argument left at ``None`` is the
@@ -29,6 +30,7 @@ from . import (
     paper_defaults,
     road,
     section_contact,
+    whole_car,
 )
 from .bands import BandExtension, BandModel, band_extension
 from .calibration import calibration_table
@@ -86,6 +88,7 @@ __all__ = [
     "road_test_conditions",
     "section_cleat_test",
     "section_contact",
+    "whole_car",
     "section_frozen_check",
     "speed_sweep",
     "suspension_conditions",

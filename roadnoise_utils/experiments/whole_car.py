@@ -25,13 +25,22 @@ from dataclasses import dataclass
 import control
 import numpy as np
 import pandas as pd
+from scipy.signal import coherence as estimated_coherence
 
 from .. import guards
 from ..repro import stages
+from ..rm.simulation import simulate
 from ..road import two_track
+from ..road.input import profile_input
 from ..road.textures import RoadSpectrum, load_texture
 from ..vehicle import full_car
-from ..vehicle.car_spectra import CarSpectra, car_spectra, predicted_axle_coherence
+from ..vehicle.car_spectra import (
+    CarSpectra,
+    car_spectra,
+    coherence_deviation,
+    predicted_axle_coherence,
+    welch_averages,
+)
 from ..vehicle.full_car import CORNERS, FullCar, FullCarRun
 from ..vehicle.quarter_car import QuarterCar, vehicle_statespace
 from ..vehicle.spectra import band_power_ratios, expected_psd, psd
@@ -213,7 +222,7 @@ def _cached_run(setup: WholeCarSetup, spectrum, speed, duration, seed, lateral, 
         textures,
         simulation,
         car_spectra_module,
-        *stages._frf_runs(setup.tire.tire),
+        *stages.frf_runs(setup.tire.tire),
     )
     return cached(
         "whole_car_run",
@@ -225,28 +234,85 @@ def _cached_run(setup: WholeCarSetup, spectrum, speed, duration, seed, lateral, 
 
 @dataclass(frozen=True, eq=False)
 class AxleCoherence:
-    """Left/right coherence of the front axle's road forces: estimated, predicted and the road's (-)."""
+    """Left/right coherence of the front axle's road forces: estimated, predicted and the road's (-).
+
+    ``forces`` (2, samples): the left and right fixed-hub forces of the run (N), at ``sample_rate``
+    Hz; ``deviation``: the estimate's standard deviation about the prediction
+    (:func:`.vehicle.car_spectra.coherence_deviation`).
+    """
 
     freqs: np.ndarray
     estimated: np.ndarray
     predicted: np.ndarray
     road: np.ndarray
-    run: WholeCarRun
+    forces: np.ndarray
+    sample_rate: float
+    deviation: np.ndarray
+
+
+def axle_forces(
+    setup: WholeCarSetup, spectrum: RoadSpectrum, speed: float, duration: float, seed: int
+) -> tuple[np.ndarray, float]:
+    """The front axle's left and right fixed-hub forces (2, samples; N) on a 3-D road of only its
+    two wheels' tracks, and the sample rate (Hz): what the coherence needs, half a whole-car run."""
+    static, travel = setup.tire.static, speed * duration
+    axle = setup.car.positions[:2]  # FL, FR
+    road = two_track.two_track_road(spectrum, static, axle, travel, seed=seed)
+    forces = []
+    for y_wheel in axle[:, 1]:
+        profile = lambda s, y, y_wheel=y_wheel: road.height(s, y_wheel + y)  # noqa: E731
+        inputs = profile_input(static, profile, speed, (0.0, travel), oversample=1)
+        forces.append(simulate(setup.tire.sections, inputs).force)
+    return np.array(forces), float(inputs.sample_rate)
+
+
+def predicted_coherence(
+    setup: WholeCarSetup, conditions: WholeCarConditions | None = None
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Frequencies (Hz, the coherence run's Welch bins up to 15 Hz), the front axle's predicted
+    force coherence and the road's at its track (-): the frequency domain alone."""
+    test = whole_car_conditions() if conditions is None else conditions
+    speed = test.coherence_speed_kmh / 3.6
+    f = np.arange(1, int(15.0 / test.coherence_resolution) + 1) * test.coherence_resolution
+    predicted, road = predicted_axle_coherence(
+        f, setup.tire.fits.responses(f), setup.tire.static, test.spectrum, speed, setup.car.track_front
+    )
+    return f, predicted, road
 
 
 def axle_coherence(setup: WholeCarSetup, conditions: WholeCarConditions | None = None) -> AxleCoherence:
-    """The 3-D coherence run (cached) and the frequency-domain coherence of the front axle, 0-15 Hz."""
+    """The front axle on the coherence run's 3-D road (cached) against the frequency domain, 0-15 Hz."""
+    from ..repro.cache import cached
+    from ..rm import simulation
+    from ..road import input as road_input
+    from ..road import textures
+
     test = whole_car_conditions() if conditions is None else conditions
     speed = test.coherence_speed_kmh / 3.6
-    run = _cached_run(
-        setup, test.spectrum, speed, test.coherence_duration, test.coherence_seed, True, test.coherence_resolution, None
+    inputs = {
+        "tire": setup.tire.tire,
+        "car": setup.car,
+        "spectrum": test.spectrum,
+        "speed": speed,
+        "duration": test.coherence_duration,
+        "seed": test.coherence_seed,
+    }
+    forces, rate = cached(
+        "axle_forces",
+        inputs,
+        lambda: axle_forces(setup, test.spectrum, speed, test.coherence_duration, test.coherence_seed),
+        runs=(two_track, road_input, textures, simulation, *stages.frf_runs(setup.tire.tire)),
     )
-    f = run.spectra.freqs
-    keep = (f > 0) & (f <= 15.0)
-    predicted, road = predicted_axle_coherence(
-        f[keep], setup.tire.fits.responses(f[keep]), setup.tire.static, test.spectrum, speed, setup.car.track_front
-    )
-    return AxleCoherence(f[keep], run.spectra.force_coherence["front"][keep], predicted, road, run)
+    f, predicted, road = predicted_coherence(setup, test)
+    nperseg = int(round(rate / test.coherence_resolution))
+    skip = int(round(0.5 * rate))  # the start-up, as the spectra
+    bins, estimated = estimated_coherence(forces[0, skip:], forces[1, skip:], fs=rate, window="hann", nperseg=nperseg)
+    on_bins = np.searchsorted(bins, f)
+    if not np.allclose(bins[on_bins], f):
+        raise RuntimeError("the coherence estimate's Welch bins are not the prediction's frequencies")
+    averages = welch_averages(forces.shape[1] - skip, nperseg)
+    deviation = coherence_deviation(predicted, averages)
+    return AxleCoherence(f, estimated[on_bins], predicted, road, forces, rate, deviation)
 
 
 def _with_heavy_body(car: FullCar, factor: float) -> FullCar:
@@ -294,7 +360,7 @@ def notch_depth(setup: WholeCarSetup, speed: float, f_max: float = 250.0) -> pd.
     rows = {}
     for name, offset in (("a_pitch", 0.0), ("a_heave", 0.5)):
         k = model.output_labels.index(name)
-        notches = base * (np.arange(1, int(f_max / base)) + offset)
+        notches = base * (np.arange(0 if offset else 1, int(f_max / base)) + offset)  # heave from V/2L
         at = np.abs(full_car.axle_delay_transfer(model, notches, speed, symmetric.wheelbase)[k])
         peak = np.abs(full_car.axle_delay_transfer(model, grid, speed, symmetric.wheelbase)[k]).max()
         rows[name] = {"notches": notches.size, "first (Hz)": notches[0], "largest at a notch / peak": at.max() / peak}

@@ -18,6 +18,7 @@ from . import (
     road_input,
     superposition,
     tassello_fitting,
+    whole_car,
 )
 
 __all__ = [
@@ -33,4 +34,5 @@ __all__ = [
     "road_input",
     "superposition",
     "tassello_fitting",
+    "whole_car",
 ]

@@ -9,6 +9,9 @@ model; :func:`write_report` writes it as CSV and Markdown.
 
 A claim states per model a documented deviation (``known_deviation`` for the ring,
 ``known_deviation_cross_section``) or why it does not apply (``not_applicable_cross_section``).
+A check *beyond the paper* (``beyond``: the feature, e.g. the whole car) states what it is
+compared with (``compared_with``: a closed form, a cited measurement); the report marks it and
+counts it apart from the paper's claims.
 """
 
 from __future__ import annotations
@@ -125,7 +128,8 @@ def report(
             raise KeyError(f"no evaluator for claim {c['id']!r}")
         row = {
             "id": c["id"],
-            "claim": c["claim"],
+            "kind": f"beyond the paper ({c['beyond']})" if "beyond" in c else "paper",
+            "claim": c["claim"] + (f" [compared with {c['compared_with']}]" if "compared_with" in c else ""),
             "where": c["where"],
             "paper": c["paper"] if isinstance(c["paper"], str) else _format(float(c["paper"])),
             "tolerance": tolerance_text(c),
@@ -163,8 +167,14 @@ def unexpected_failures(table: pd.DataFrame) -> pd.DataFrame:
     return table[bad]
 
 
-def counts(table: pd.DataFrame, model: str) -> dict[str, int]:
-    """Claims passed, failed as documented deviations, failed unexpectedly and not applicable for ``model``."""
+def _is_paper(table: pd.DataFrame) -> np.ndarray:
+    return (table["kind"] == "paper").to_numpy() if "kind" in table else np.ones(len(table), bool)
+
+
+def counts(table: pd.DataFrame, model: str, beyond: bool = False) -> dict[str, int]:
+    """The paper's claims (or, with ``beyond``, the checks beyond the paper) passed, failed as
+    documented deviations, failed unexpectedly and not applicable for ``model``."""
+    table = table[~_is_paper(table)] if beyond else table[_is_paper(table)]
     verdict, note = table[f"verdict ({model})"], table[f"deviation ({model})"]
     return {
         "claims": len(table),
@@ -185,6 +195,13 @@ def summary(table: pd.DataFrame) -> str:
             f"{m}: {n['pass']} of {evaluated} claims reproduced, {n['deviations']} documented deviations, "
             f"{n['unexpected']} unexpected failures" + (f", {n['n/a']} not applicable" if n["n/a"] else "")
         )
+    for m in models_of(table):
+        n = counts(table, m, beyond=True)
+        if n["claims"]:
+            lines.append(
+                f"{m}, beyond the paper: {n['pass']} of {n['claims'] - n['n/a']} checks pass, "
+                f"{n['deviations']} documented deviations, {n['unexpected']} unexpected failures"
+            )
     return "\n".join(lines)
 
 
@@ -212,7 +229,9 @@ def to_markdown(table: pd.DataFrame) -> str:
             if row[f"deviation ({m})"]:
                 label = "does not apply" if row[f"verdict ({m})"] == "n/a" else "deviation"
                 notes.append(f'- <a id="{m}-{cid}"></a>**{m}: {cid}** ({label}): {row[f"deviation ({m})"]}')
-        cells = [row["claim"], row["where"], row["paper"], row["tolerance"], *(_cell(row, cid, m) for m in models)]
+        kind = row.get("kind", "paper")
+        text = row["claim"] if kind == "paper" else f"*{kind}:* {row['claim']}"
+        cells = [text, row["where"], row["paper"], row["tolerance"], *(_cell(row, cid, m) for m in models)]
         lines.append("| " + " | ".join(str(c).replace("|", "/") for c in [*cells, row["notebook"]]) + " |")
     body = [summary(table).replace("\n", "  \n"), "", *lines, ""]
     return "\n".join(body + (["Known deviations and claims that do not apply:", "", *notes] if notes else [])) + "\n"

@@ -21,6 +21,14 @@ from ..experiments.corner import PAPER_CAR, QuarterCarTest, quarter_car
 from ..experiments.moving_hub import moving_hub_check
 from ..experiments.one_sided_cleat import OneSidedCleatTest, one_sided_cleat_test
 from ..experiments.section_contact import section_cleat_test
+from ..experiments.whole_car import (
+    WholeCarSetup,
+    heavy_body_difference,
+    notch_depth,
+    predicted_coherence,
+    wheelbase_check,
+    whole_car_setup,
+)
 from ..response.frf import FRFResult
 from ..rm.fitting import fit_tasselli
 from ..road.kernels import tassellation_error
@@ -173,6 +181,16 @@ def _two_peaks(model: str, which: str) -> float:
     return float(distinct_peaks(run.distance, run.hub_force, (-0.15, 0.15)))
 
 
+@functools.cache
+def _whole_car(model: str) -> WholeCarSetup:
+    return whole_car_setup(tire=tire_of(model, "check"))
+
+
+def _car_coherence(model: str) -> float:
+    _, predicted, road = predicted_coherence(_whole_car(model))
+    return float(np.abs(predicted - road).max())
+
+
 EVALUATORS: dict[str, Callable[[str], float]] = {
     "fe_dof": _fe_dof,
     "n_tasselli": lambda m: float(stages.solve_static(tire_of(m)).tasselli.n),
@@ -204,4 +222,8 @@ EVALUATORS: dict[str, Callable[[str], float]] = {
     "contact_dynamic": lambda m: _contact(m).dynamic.peak_force,
     "contact_ratio": lambda m: _contact(m).ratio,
     "contact_decay": lambda m: float(_contact(m).decay["frequency (Hz)"].iloc[0]),
+    "car_heavy_body": lambda m: heavy_body_difference(_whole_car(m).car),
+    "car_notches": lambda m: float(notch_depth(_whole_car(m), 20.0)["largest at a notch / peak"].max()),
+    "car_time_vs_frequency": lambda m: float((wheelbase_check(_whole_car(m)).ratios - 1.0).abs().to_numpy().max()),
+    "car_coherence": _car_coherence,
 }

@@ -104,7 +104,7 @@ def _ring_only(tire: Tire, stage: str) -> None:
         raise ValueError(f'{stage} runs on ring tires ([tire] model = "ring"); {tire!r} is a cross-section tire')
 
 
-def _frf_runs(tire: Tire) -> tuple:
+def frf_runs(tire: Tire) -> tuple:
     """The numerics behind :func:`frf_visco` for this tire's model (cache fingerprints)."""
     if is_cross_section(tire):
         return (section_footprint.footprint_frf, section_static.solve_section_static)
@@ -248,7 +248,7 @@ def fit_tasselli(
     def compute() -> FitSet:
         return order.fit_at_order(visco.freqs, visco.H, n_poles, f_max, FIT_TOLERANCE, strict=False)
 
-    return cached(fit_tasselli, {**inputs, **options}, compute, runs=(order.fit_at_order, *_frf_runs(tire)))
+    return cached(fit_tasselli, {**inputs, **options}, compute, runs=(order.fit_at_order, *frf_runs(tire)))
 
 
 def fit_hub(
@@ -267,7 +267,7 @@ def fit_hub(
     def compute() -> FitSet:
         return moving_hub.fit_hub(visco.freqs, visco.G_H, n_poles=n_poles, f_max=f_max, tolerance=FIT_TOLERANCE)
 
-    return cached(fit_hub, {**inputs, **options}, compute, runs=(moving_hub.fit_hub, *_frf_runs(tire)))
+    return cached(fit_hub, {**inputs, **options}, compute, runs=(moving_hub.fit_hub, *frf_runs(tire)))
 
 
 def assemble_fixed_hub(

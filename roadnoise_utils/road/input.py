@@ -195,7 +195,7 @@ def profile_input(
     n_x = parts[0][2].shape[1]
     s = x0 + d0 + step * np.arange(n_x + (n_grid - 1) * oversample)
     lateral = _takes_lateral(profile)
-    y_strips = _strip_centres(static)
+    y_strips = strip_centres(static)
     on_grid = np.zeros((static.tasselli.n, n_grid))
     z_uniform = None if lateral else _heights(profile, s)
     for strip, rows, kernels in parts:
@@ -264,7 +264,7 @@ def _check_static(static) -> None:
         )
 
 
-def _strip_centres(static: StaticState) -> np.ndarray:
+def strip_centres(static: StaticState) -> np.ndarray:
     """Lateral position of every belt strip (m), indexed by strip number."""
     t = static.tasselli
     centres = np.full(int(t.node_strip.max()) + 1, np.nan)
@@ -278,7 +278,7 @@ ROAD_MARGIN = 5.0
 
 def contact_tracks(static: StaticState) -> np.ndarray:
     """Lateral positions (m) of the belt strips in contact: where a 3D road needs its tracks."""
-    centres = _strip_centres(static)
+    centres = strip_centres(static)
     return np.unique(centres[np.isfinite(centres)])
 
 

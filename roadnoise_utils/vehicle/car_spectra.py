@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.signal import coherence as estimated_coherence
 
-from ..road.input import _strip_centres
+from ..road.input import strip_centres
 from ..road.kernels import strip_kernels
 from ..road.textures import RoadSpectrum, as_spectrum, coherence
 from .full_car import CORNERS, FullCarRun
@@ -72,6 +72,22 @@ def car_spectra(run: FullCarRun, resolution: float = 2.0, skip: float = 0.5) -> 
     return CarSpectra(freqs=freqs, psd={k: v[1] for k, v in spectra.items()}, force_coherence=force_coherence)
 
 
+def welch_averages(n_samples: int, nperseg: int) -> float:
+    """Equivalent number of independent averages of a Welch estimate with Hann windows at 50 %
+    overlap: :math:`K / (1 + 2\\rho^2)`, :math:`\\rho = 0.167` the correlation of adjacent
+    windows (Welch 1967, IEEE Trans. Audio Electroacoust. 15(2))."""
+    windows = max(1, (n_samples - nperseg) // (nperseg // 2) + 1)
+    return windows / (1.0 + 2.0 * 0.167**2)
+
+
+def coherence_deviation(coherence_value: np.ndarray, averages: float) -> np.ndarray:
+    """Standard deviation of an estimated coherence :math:`\\hat\\gamma^2` about a true
+    :math:`\\gamma^2` from ``averages`` independent windows: :math:`\\sqrt{2}\\,(1 - \\gamma^2)|\\gamma| / \\sqrt{n_d}`
+    (Bendat & Piersol, *Random Data*, 4th ed., Eq. 9.82)."""
+    g2 = np.clip(np.asarray(coherence_value, float), 0.0, 1.0)
+    return np.sqrt(2.0) * (1.0 - g2) * np.sqrt(g2) / np.sqrt(averages)
+
+
 def strip_transfers(
     static, tassello_frf: np.ndarray, wavenumbers: np.ndarray, step: float = 2.0e-4
 ) -> tuple[np.ndarray, np.ndarray]:
@@ -82,7 +98,7 @@ def strip_transfers(
     is the 2-D road's transfer (:func:`.corner.predicted_psd`).
     """
     parts, x0 = strip_kernels(static.tasselli, step)
-    centres = _strip_centres(static)
+    centres = strip_centres(static)
     n = np.asarray(wavenumbers, float)
     y, transfers = [], []
     for strip, rows, kernels in parts:

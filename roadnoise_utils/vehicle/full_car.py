@@ -29,6 +29,7 @@ from pathlib import Path
 
 import control
 import numpy as np
+import pandas as pd
 
 from .. import guards
 from ..repro.paths import data_file, read_toml
@@ -244,6 +245,28 @@ def full_car_statespace(car: FullCar, tire_hub_mass: float = 0.0) -> control.Sta
     )
     outputs = [f"{q}_{c}" for q in ("z_hub", "a_hub", "a_mount") for c in CORNERS] + list(BODY_OUTPUTS)
     return control.ss(a_mat, b_mat, c_mat, d_mat, inputs=[f"F_tire_{c}" for c in CORNERS], outputs=outputs)
+
+
+def car_modes(car: FullCar, model: control.StateSpace, tire_hub_mass: float, f_max: float = 30.0) -> pd.DataFrame:
+    """The modes of the car on its tires (``model`` from :func:`full_car_model`) below ``f_max`` Hz:
+    natural frequency (Hz), damping ratio, and the DOF with the largest share of the car's kinetic
+    energy in it (the closed model's first states are the car's, :func:`full_car_statespace`)."""
+    corners = {c: with_extra_hub_mass(car.corner(c), tire_hub_mass) for c in CORNERS}
+    names, _, mass = _dof(car, corners)
+    lam, vectors = np.linalg.eig(np.asarray(model.A))
+    n = len(names)
+    rows = []
+    for k in np.nonzero((lam.imag > 0) & (np.abs(lam) < 2 * np.pi * f_max))[0]:
+        energy = np.diag(mass) * np.abs(vectors[n : 2 * n, k]) ** 2  # kinetic energy per DOF
+        rows.append(
+            {
+                "frequency (Hz)": abs(lam[k]) / (2 * np.pi),
+                "damping ratio": -lam[k].real / abs(lam[k]),
+                "dominant DOF": names[int(np.argmax(energy))],
+                "its energy share": float(energy.max() / energy.sum()),
+            }
+        )
+    return pd.DataFrame(rows).sort_values("frequency (Hz)").reset_index(drop=True)
 
 
 def couple_full_car(vehicle: control.StateSpace, hub_tires: list[control.StateSpace]) -> control.StateSpace:

@@ -1,0 +1,131 @@
+"""Figures of notebook 11-whole-car: the car's layout, corner and body spectra, the wheelbase filtering, the axles' coherence."""
+
+from __future__ import annotations
+
+import matplotlib.pyplot as plt
+import numpy as np
+from matplotlib.patches import Rectangle
+
+from ..vehicle.full_car import CORNERS
+
+#: One colour per corner.
+CORNER_COLOURS = dict(zip(CORNERS, ["tab:red", "tab:orange", "tab:blue", "tab:cyan"]))
+
+
+def plot_car_layout(car, tracks: np.ndarray | None = None) -> plt.Figure:
+    """Top view: the body's centre of mass, the four wheels at their positions, and the road tracks they run on."""
+    fig, ax = plt.subplots(figsize=(7, 3.6))
+    positions = car.positions
+    for corner, (x, y) in zip(CORNERS, positions):
+        ax.add_patch(Rectangle((x - 0.3, y - 0.1), 0.6, 0.2, fc=CORNER_COLOURS[corner], alpha=0.6, ec="k"))
+        ax.text(x, y + (0.18 if y > 0 else -0.18), corner, ha="center", va="center", fontsize=9)
+    ax.plot([positions[:, 0].min(), positions[:, 0].max()], [0, 0], "k:", lw=0.8)
+    ax.plot(0, 0, "k+", ms=12, mew=2)
+    ax.text(0.05, 0.06, f"centre of mass\n{car.body.mass:g} kg", fontsize=8)
+    if tracks is not None:
+        for y in tracks:
+            ax.axhline(y, color="tab:brown", lw=0.3, alpha=0.6)
+    ax.annotate("", (positions[0, 0], -0.95), (positions[2, 0], -0.95), arrowprops={"arrowstyle": "<->"})
+    ax.text(0.5 * (positions[0, 0] + positions[2, 0]), -1.05, f"wheelbase {car.wheelbase:g} m", ha="center", va="top")
+    ax.annotate(
+        "",
+        (positions[0, 0] + 0.45, positions[0, 1]),
+        (positions[0, 0] + 0.45, positions[1, 1]),
+        arrowprops={"arrowstyle": "<->"},
+    )
+    ax.text(positions[0, 0] + 0.5, 0.0, f"track\n{car.track_front:g} m", va="center", fontsize=8)
+    ax.text(
+        positions[:, 0].min() - 0.1,
+        0.0,
+        "rear: the front's road\na wheelbase later",
+        ha="right",
+        va="center",
+        fontsize=8,
+    )
+    ax.set_xlim(positions[:, 0].min() - 1.4, positions[:, 0].max() + 1.2)
+    ax.set_ylim(-1.3, 1.1)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x forward (m)")
+    ax.set_ylabel("y left (m)")
+    ax.set_title(f"{car.name}: top view, the road tracks of the belt strips in brown")
+    return fig
+
+
+def plot_corner_spectra(
+    freqs: np.ndarray,
+    psd: dict[str, np.ndarray],
+    quantity: str,
+    f_range: tuple[float, float],
+    ax: plt.Axes | None = None,
+) -> plt.Axes:
+    """The amplitude spectral density of ``quantity`` (``a_hub``, ``a_mount``) at every corner."""
+    if ax is None:
+        _, ax = plt.subplots(figsize=(8, 4))
+    keep = (freqs >= f_range[0]) & (freqs <= f_range[1])
+    for corner in CORNERS:
+        ax.semilogy(
+            freqs[keep], np.sqrt(psd[f"{quantity}_{corner}"][keep]), color=CORNER_COLOURS[corner], lw=1.0, label=corner
+        )
+    ax.set_xlim(*f_range)
+    ax.set_xlabel("Frequency (Hz)")
+    ax.set_ylabel(f"{quantity} ASD ((m/s²)/√Hz)")
+    ax.legend(ncol=4)
+    return ax
+
+
+def plot_body_spectra(freqs: np.ndarray, psd: dict[str, np.ndarray], f_range: tuple[float, float]) -> plt.Figure:
+    """Heave acceleration (m/s²) and pitch and roll accelerations (rad/s²) of the body."""
+    fig, (left, right) = plt.subplots(1, 2, figsize=(10, 3.8))
+    keep = (freqs >= f_range[0]) & (freqs <= f_range[1])
+    left.semilogy(freqs[keep], np.sqrt(psd["a_heave"][keep]), color="k", lw=1.0, label="heave")
+    left.set_ylabel("heave acceleration ASD ((m/s²)/√Hz)")
+    for name, colour in (("a_pitch", "tab:purple"), ("a_roll", "tab:green")):
+        right.semilogy(freqs[keep], np.sqrt(psd[name][keep]), color=colour, lw=1.0, label=name[2:])
+    right.set_ylabel("angular acceleration ASD ((rad/s²)/√Hz)")
+    for ax in (left, right):
+        ax.set_xlim(*f_range)
+        ax.set_xlabel("Frequency (Hz)")
+        ax.legend()
+    return fig
+
+
+def plot_wheelbase_filtering(check, notches: dict[str, np.ndarray], f_range: tuple[float, float]) -> plt.Figure:
+    """Heave and pitch on a 2-D road: the time-domain Welch estimate, the frequency domain, and the
+    closed-form notches of a car symmetric front to rear (:math:`kV/L` pitch, :math:`(k + 1/2) V/L` heave)."""
+    run = check.run
+    fig, axes = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
+    for ax, name, label in zip(axes, ("a_heave", "a_pitch"), ("heave", "pitch")):
+        f = run.spectra.freqs
+        keep = (f >= f_range[0]) & (f <= f_range[1])
+        ax.semilogy(
+            f[keep], np.sqrt(run.spectra.psd[name][keep]), color="tab:blue", lw=1.0, label="time domain (Welch)"
+        )
+        fp = check.freqs
+        k = (fp >= f_range[0]) & (fp <= f_range[1])
+        ax.semilogy(fp[k], np.sqrt(check.predicted[name][k]), "k--", lw=0.8, label="frequency domain (Eq. 8, delay)")
+        for j, f_notch in enumerate(notches[label]):
+            ax.axvline(f_notch, color="tab:red", lw=0.6, alpha=0.5, label="symmetric car's notches" if j == 0 else None)
+        unit = "(m/s²)/√Hz" if name == "a_heave" else "(rad/s²)/√Hz"
+        ax.set_ylabel(f"{label} ASD ({unit})")
+        ax.legend(fontsize=8, loc="upper right")
+    axes[-1].set_xlim(*f_range)
+    axes[-1].set_xlabel("Frequency (Hz)")
+    fig.suptitle(
+        f"Wheelbase filtering at {check.speed * 3.6:.0f} km/h: notches V/L = {check.speed / check.wheelbase:.1f} Hz apart"
+    )
+    return fig
+
+
+def plot_axle_coherence(check) -> plt.Axes:
+    """Coherence of the front axle's left and right road forces: estimated, predicted, and the road's own at the track."""
+    _, ax = plt.subplots(figsize=(8, 3.8))
+    ax.plot(check.freqs, check.estimated, color="tab:blue", lw=1.0, marker=".", label="time domain (Welch estimate)")
+    ax.plot(check.freqs, check.predicted, "k--", lw=1.0, label="road forces, frequency domain")
+    low, high = check.predicted - 2 * check.deviation, check.predicted + 2 * check.deviation
+    ax.fill_between(check.freqs, low, high, color="0.5", alpha=0.2, label="± 2 standard deviations of the estimate")
+    ax.plot(check.freqs, check.road, color="tab:brown", lw=2.0, alpha=0.4, label="road tracks a track width apart")
+    ax.set_xlabel("Frequency (Hz)")
+    ax.set_ylabel("coherence γ² (-)")
+    ax.set_ylim(0, 1.02)
+    ax.legend()
+    return ax
