@@ -1,0 +1,180 @@
+"""The tire's air cavity as an acoustic waveguide around the wheel (beyond the paper; issue 15, item 5).
+
+The air between the rim and the belt is a torus; below its first cross-sectional mode (~1 kHz
+for a passenger tire) the sound in it is a plane wave running around the circumference, and a
+torus of mean radius :math:`R` has its circumferential modes at
+
+.. math:: f_n = \\frac{n\\,c}{2\\pi R}, \\qquad n = 1, 2, \\dots
+
+(the rigid torus; ~200-230 Hz for :math:`n = 1` on passenger tires, inside the paper's band).
+Each is a doublet: :math:`\\cos n\\theta` and :math:`\\sin n\\theta` at one frequency.
+
+**Webster's equation.** A duct whose cross-section area :math:`A(s)` varies slowly along its
+axis :math:`s = R\\theta` carries :math:`(A p')' + k^2 A p = 0`, :math:`k = \\omega/c`. Loaded,
+the footprint flattens the belt and the cavity is shallower there: :math:`A(\\theta)` dips at
+:math:`\\theta = 0`, the symmetry is broken and the doublet splits. The even mode (pressure
+antinodes at the footprint and the top: its pressure pushes the rim up and down, the
+*vertical* mode) loses inertia where it has most pressure and rises; the odd mode (a node at
+the footprint, pressure pushing the rim fore and aft) loses stiffness where its pressure
+gradient is largest and falls. To first order (Rayleigh's quotient on the unloaded shapes),
+with :math:`\\Delta A(\\theta)` the area the loaded belt takes out of the section,
+
+.. math:: \\frac{\\delta f_{v,fa}}{f_1} = \\pm \\frac{1}{2}\\,\\frac{\\int \\Delta A \\cos 2\\theta\\, ds}{\\pi R A},
+          \\qquad \\frac{f_v - f_{fa}}{f_1} = \\frac{\\int \\Delta A \\cos 2\\theta\\, ds}{\\pi R A}:
+
+the split weighs the area lost at the footprint (:math:`\\cos 2\\theta = 1`) and the area
+*gained* at the front and the back (:math:`\\cos 2\\theta = -1`, where a nearly inextensible
+belt bulges out) alike, so the belt's ovalisation splits the doublet more than the volume the
+footprint takes out (on the 195/65 R15 at 4000 N: 10.8 Hz against 0.3 Hz from the net volume
+change alone). Measured splits: 4-14 Hz at rated load on passenger tires, nearly quadratic in
+the load (Choi & Bolton, INTER-NOISE 2020, pp. 213-228), 2.0-11.2 Hz on 24 tires with a
+steeper, up to fourth-order, load dependence (Choi & Bolton, AIP Advances 2026,
+doi:10.1063/5.0315230), the fore-aft mode below the vertical one in both. A linear tire model
+gives a split linear in the load.
+
+:func:`webster_modes` solves the equation by periodic linear finite elements on any
+:math:`A(\\theta)`; :func:`loaded_area` takes :math:`A(\\theta)` from the loaded ring tire's
+belt. The coupling of the pressure with the belt and the rim (the hub force of the cavity) is
+the next step of the issue, not in this module yet.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.linalg as sla
+
+from .. import guards
+from .ring_model import UX, UZ, build_mesh
+from .spec import TireSpec
+
+#: Ratio of specific heats and specific gas constant of dry air (-, J/(kg K)).
+GAMMA_AIR, R_AIR = 1.4, 287.05
+
+
+def air(temperature: float = 20.0, gauge_pressure: float = 2.3e5, ambient: float = 101325.0) -> tuple[float, float]:
+    """Speed of sound (m/s) and density (kg/m^3) of the inflation air (ideal gas) at ``temperature`` (deg C)."""
+    t = guards.real("temperature", temperature, -50.0, 150.0, unit="deg C") + 273.15
+    p = guards.real("gauge_pressure", gauge_pressure, 0.0, 2.0e6, unit="Pa") + ambient
+    return float(np.sqrt(GAMMA_AIR * R_AIR * t)), float(p / (R_AIR * t))
+
+
+@dataclass(frozen=True)
+class Cavity:
+    """The unloaded cavity as a waveguide: mean radius (m), cross-section area (m^2), air (m/s, kg/m^3).
+
+    ``inner_radius`` is the rim's and ``outer_radius`` the belt's inner surface: the torus lies
+    between them, ``mean_radius`` their mean (the waveguide's axis).
+    """
+
+    inner_radius: float
+    outer_radius: float
+    width: float
+    sound_speed: float
+    density: float
+
+    def __post_init__(self) -> None:
+        guards.real("inner_radius", self.inner_radius, 0.05, 1.0, unit="m")
+        guards.real("outer_radius", self.outer_radius, self.inner_radius, 1.5, lo_open=True, unit="m (above the rim's)")
+        guards.real("width", self.width, 0.02, 1.0, unit="m")
+        guards.real("sound_speed", self.sound_speed, 200.0, 500.0, unit="m/s")
+        guards.real("density", self.density, 0.1, 20.0, unit="kg/m^3")
+
+    @property
+    def mean_radius(self) -> float:
+        return 0.5 * (self.inner_radius + self.outer_radius)
+
+    @property
+    def area(self) -> float:
+        """Cross-section area (m^2): the section between rim and belt, ``width`` wide."""
+        return (self.outer_radius - self.inner_radius) * self.width
+
+    @property
+    def volume(self) -> float:
+        return 2.0 * np.pi * self.mean_radius * self.area
+
+
+def ring_tire_cavity(spec: TireSpec, temperature: float = 20.0) -> Cavity:
+    """The cavity of a ring tire file: from the rim to the belt's inner surface (its centre line less
+    half the belt, taken as a third of the tread thickness), as wide as the mean of the rim and the
+    section widths, filled with air at the inflation pressure."""
+    g = spec.geometry
+    c, rho = air(temperature, spec.operating.inflation_pressure)
+    belt_inner = g.belt_radius - g.tread_thickness / 3.0
+    width = 0.5 * (spec.operating.rim_width + g.section_width)
+    return Cavity(g.rim_radius, belt_inner, width, c, rho)
+
+
+def rigid_torus_frequencies(cavity: Cavity, orders: np.ndarray | int) -> np.ndarray:
+    """:math:`f_n = n c / (2\\pi R)` of the rigid, unloaded torus (Hz)."""
+    n = np.atleast_1d(np.asarray(orders, float))
+    return n * cavity.sound_speed / (2.0 * np.pi * cavity.mean_radius)
+
+
+@dataclass(frozen=True, eq=False)
+class CavityModes:
+    """Modes of the waveguide: frequencies (Hz), pressure shapes (modes, nodes) at ``theta`` (rad,
+    from the footprint centre), and each mode's symmetry about the footprint (+1 even, -1 odd)."""
+
+    freqs: np.ndarray
+    shapes: np.ndarray
+    theta: np.ndarray
+    parity: np.ndarray
+
+    def split(self) -> tuple[float, float]:
+        """The first doublet: (fore-aft, vertical) frequencies (Hz), the odd and the even mode of ``n = 1``."""
+        first = np.argsort(self.freqs)[1:3]  # mode 0 is the uniform pressure (0 Hz)
+        by_parity = {int(self.parity[k]): float(self.freqs[k]) for k in first}
+        if sorted(by_parity) != [-1, 1]:
+            raise RuntimeError("the first doublet is not one even and one odd mode: is the area symmetric about 0?")
+        return by_parity[-1], by_parity[1]
+
+
+def webster_modes(cavity: Cavity, area: np.ndarray | None = None, n_modes: int = 7) -> CavityModes:
+    """Plane-wave modes of the cavity from Webster's equation, periodic linear elements around the axis.
+
+    ``area`` (m^2): the cross-section at equally spaced angles from the footprint centre (one per
+    element node; default ``cavity.area`` everywhere, 720 nodes). Mode 0 (uniform pressure) is
+    included. The discretisation error is ~(n dtheta)^2 / 12 relative (1e-6 at n = 1, 720 nodes).
+    """
+    area = np.full(720, cavity.area) if area is None else np.asarray(area, float)
+    if area.ndim != 1 or area.size < 32 or not np.all(np.isfinite(area)) or np.any(area <= 0):
+        raise ValueError("area must be positive and finite at >= 32 equally spaced angles (m^2)")
+    n = area.size
+    h = 2.0 * np.pi * cavity.mean_radius / n
+    element_area = 0.5 * (area + np.roll(area, -1))  # element e joins nodes e and e + 1
+    stiffness = np.zeros((n, n))
+    mass = np.zeros((n, n))
+    for e, a in enumerate(element_area):
+        i, j = e, (e + 1) % n
+        stiffness[np.ix_([i, j], [i, j])] += a / h * np.array([[1.0, -1.0], [-1.0, 1.0]])
+        mass[np.ix_([i, j], [i, j])] += a * h / 6.0 * np.array([[2.0, 1.0], [1.0, 2.0]])
+    k2, shapes = sla.eigh(stiffness, mass, subset_by_index=[0, n_modes - 1])
+    theta = 2.0 * np.pi * np.arange(n) / n
+    mirror = (-np.arange(n)) % n  # theta -> -theta
+    parity = np.sign(np.sum(shapes * shapes[mirror], axis=0))
+    freqs = cavity.sound_speed * np.sqrt(np.clip(k2, 0.0, None)) / (2.0 * np.pi)
+    return CavityModes(freqs=freqs, shapes=shapes.T, theta=theta, parity=parity.astype(int))
+
+
+def loaded_area(cavity: Cavity, static, n_nodes: int | None = None) -> np.ndarray:
+    """The cavity's cross-section (m^2) around a loaded ring tire, at its belt nodes' angles.
+
+    The belt's inward radial displacement of each strip, times the strip's width, is the area the
+    footprint takes out of the cavity (the sidewalls bulge outwards and are left out: they widen
+    the section by far less than the belt flattens it).
+    """
+    spec = static.tire
+    if spec is None or spec.model != "ring":
+        raise ValueError("static must be a ring tire's loaded state (solve_static of a ring tire file)")
+    mesh = build_mesh(spec)
+    u = np.asarray(static.displacement)
+    strips, nodes = np.meshgrid(np.arange(mesh.n_strips), np.arange(mesh.n_elements), indexing="ij")
+    ux, uz = u[mesh.dof(strips, nodes, UX)], u[mesh.dof(strips, nodes, UZ)]
+    outward = ux * np.sin(mesh.theta)[None, :] - uz * np.cos(mesh.theta)[None, :]  # (strips, nodes)
+    lost = np.sum(-outward * mesh.strip_width, axis=0)
+    area = cavity.area - lost
+    if np.any(area <= 0.1 * cavity.area):
+        raise ValueError("the belt's deflection closes more than 90 % of the cavity section: a non-physical load")
+    return area
