@@ -26,6 +26,7 @@ import scipy.sparse.linalg as spla
 from tqdm.auto import tqdm
 
 from .. import guards
+from ..tire.cavity import CavityCoupling
 from ..tire.ring_model import FETModel
 from ..tire.static import StaticState
 from ..tire.symmetry import symmetric_basis
@@ -124,15 +125,32 @@ class HubForceSolver:
         """
         lt = self.loaded
         matrix = self.dynamic_stiffness(omega) if inertia else self.stiffness(omega)
-        lu = spla.splu(matrix, permc_spec="NATURAL")
+        solve = self._solver(spla.splu(matrix, permc_spec="NATURAL"), omega)
         row = lt.hub_row(omega)
         t = self._basis
-        y = t @ lu.solve(np.asarray(t.T @ row), trans="T")
+        y = t @ solve(np.asarray(t.T @ row), trans="T")
         g_tread = lt.fet.modulus_ratio("tread", omega)
         points = -g_tread * (lt.road_input.T @ y)
         hub = -lt.hub_diagonal(omega) + y @ row
-        u = t @ lu.solve(np.asarray(t.T @ (g_tread * self._footprint)))
+        u = t @ solve(np.asarray(t.T @ (g_tread * self._footprint)))
         return {"points": points, "G_H": hub, "H_tot": -(row @ u)}
+
+    def _solver(self, lu, omega: float):
+        """Solves with :math:`D(\\omega)`, or with the cavity's :math:`D - V C V^T` by Woodbury's identity
+        :math:`x + Z C (I - V^T Z C)^{-1} V^T x`, :math:`Z = D^{-1} V` (both symmetric: ``trans`` alike)."""
+        terms = self.loaded.cavity_terms(omega)
+        if terms is None:
+            return lu.solve
+        v = np.asarray(self._basis.T @ terms[0])
+        c = terms[1]
+        z = lu.solve(v.astype(complex))
+        capacitance = np.eye(c.size) - (v.T @ z) * c[None, :]
+
+        def solve(rhs: np.ndarray, trans: str = "N") -> np.ndarray:
+            x = lu.solve(rhs, trans=trans)
+            return x + z @ (c * np.linalg.solve(capacitance, v.T @ x))
+
+        return solve
 
     def solve_full(self, omega: float, rhs: np.ndarray) -> np.ndarray:
         """Full-size solve :math:`D(\\omega) u = rhs` (no reduction), for checks and general loads."""
@@ -146,6 +164,7 @@ def frf_visco(
     progress: bool = True,
     use_symmetry: bool = True,
     stick: bool = True,
+    cavity: CavityCoupling | None = None,
 ) -> FRFResult:
     """Direct viscoelastic FRFs of the loaded tire with the hub fixed (FETvisco).
 
@@ -163,6 +182,9 @@ def frf_visco(
         Use the exact mirror-symmetric reduction when the state allows it.
     stick : bool
         The footprint sticks to the road longitudinally (default) or slides freely.
+    cavity : CavityCoupling, optional
+        The air cavity coupled to the belt and the rim (:func:`.tire.cavity.ring_cavity_coupling`);
+        default none (the paper's model).
 
     Returns
     -------
@@ -181,7 +203,7 @@ def frf_visco(
     guards.check_memory(
         16.0 * freqs.size * (2 * n_points + 3), f"FRFs of {n_points} points at {freqs.size} frequencies", "freqs"
     )
-    solver = HubForceSolver(loaded_tire(fet, static, stick=stick), use_symmetry=use_symmetry)
+    solver = HubForceSolver(loaded_tire(fet, static, stick=stick, cavity=cavity), use_symmetry=use_symmetry)
     points = np.empty((solver.loaded.n_contact, freqs.size), complex)
     hub = np.empty(freqs.size, complex)
     total = np.empty(freqs.size, complex)

@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 
+from ..tire.cavity import CavityCoupling
 from ..tire.ring_model import UX, UZ, FETModel
 from ..tire.static import StaticState, check_same_tire
 
@@ -52,6 +53,10 @@ class LoadedTire:
     road_input : csr_matrix (n_free, n_contact)
         Force on the free DOF per unit road displacement of each contact point, at static
         tread modulus (N/m); scaled by :math:`g_{tread}(\\omega)`.
+    cavity : CavityCoupling, optional
+        The air cavity coupled to the belt and the rim (:func:`.tire.cavity.ring_cavity_coupling`):
+        :meth:`cavity_terms` is its low-rank share of the dynamic stiffness, included in
+        :meth:`hub_row` and :meth:`hub_diagonal` (the pressure on the rim). None: no cavity (the paper's model).
     """
 
     fet: FETModel
@@ -65,6 +70,15 @@ class LoadedTire:
     hub_hub_elastic: float
     hub_hub_compound: dict[str, float]
     road_input: sp.csr_matrix
+    cavity: CavityCoupling | None = None
+
+    def cavity_terms(self, omega: float) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+        """``(V_free, c, v_hub)``: the cavity adds :math:`-V\\,\\mathrm{diag}(c)\\,V^T` to the dynamic
+        stiffness on the free DOF (``V_free`` (n_free, modes)); ``v_hub`` (modes,) is the hub-vertical row of ``V``."""
+        if self.cavity is None:
+            return None
+        hub = self.fet.mesh.hub_dofs[1]
+        return self.cavity.volume[self.free], self.cavity.gains(omega), self.cavity.volume[hub]
 
     @property
     def n_contact(self) -> int:
@@ -94,12 +108,21 @@ class LoadedTire:
         row = self.hub_elastic.astype(complex)
         for name, r in self.hub_compound.items():
             row = row + g[name] * r
+        terms = self.cavity_terms(omega)
+        if terms is not None:  # the pressure the belt's motion makes, on the rim
+            v_free, c, v_hub = terms
+            row = row - v_free @ (c * v_hub)
         return row
 
     def hub_diagonal(self, omega: float, storage_only: bool = False) -> complex:
         """Hub-vertical diagonal stiffness :math:`K_{hh}(\\omega)` (N/m)."""
         g = self.ratios(omega, storage_only)
-        return self.hub_hub_elastic + sum(g[name] * v for name, v in self.hub_hub_compound.items())
+        diagonal = self.hub_hub_elastic + sum(g[name] * v for name, v in self.hub_hub_compound.items())
+        terms = self.cavity_terms(omega)
+        if terms is not None:  # the pressure the rim's own motion makes, on the rim
+            _, c, v_hub = terms
+            diagonal = diagonal - np.sum(c * v_hub**2)
+        return diagonal
 
 
 def _contact_springs(fet: FETModel, static: StaticState, stick: bool) -> tuple[sp.csr_matrix, sp.csr_matrix]:
@@ -120,7 +143,9 @@ def _contact_springs(fet: FETModel, static: StaticState, stick: bool) -> tuple[s
     return k_tread, b
 
 
-def loaded_tire(fet: FETModel, static: StaticState, stick: bool = True) -> LoadedTire:
+def loaded_tire(
+    fet: FETModel, static: StaticState, stick: bool = True, cavity: CavityCoupling | None = None
+) -> LoadedTire:
     """Linearise the FET about a static state, fixed hub, footprint tied to the road.
 
     The inputs are the contact points in the order of ``static.tasselli`` (``node_*`` arrays).
@@ -154,4 +179,5 @@ def loaded_tire(fet: FETModel, static: StaticState, stick: bool = True) -> Loade
         hub_hub_elastic=float(fet.K_elastic[hub, hub]),
         hub_hub_compound={name: float(k[hub, hub]) for name, k in compounds.items()},
         road_input=b[free].tocsr(),
+        cavity=cavity,
     )

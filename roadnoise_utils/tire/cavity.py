@@ -34,8 +34,12 @@ gives a split linear in the load.
 
 :func:`webster_modes` solves the equation by periodic linear finite elements on any
 :math:`A(\\theta)`; :func:`loaded_area` takes :math:`A(\\theta)` from the loaded ring tire's
-belt. The coupling of the pressure with the belt and the rim (the hub force of the cavity) is
-the next step of the issue, not in this module yet.
+belt. :func:`ring_cavity_coupling` couples the modes with the ring tire: the belt's radial
+motion and the rim's change the cavity's volume, the pressure pushes on both (one matrix, by
+reciprocity), and eliminating the pressure leaves a low-rank, frequency-dependent term in the
+tire's dynamic stiffness that the fixed-hub FRFs take in (:func:`.response.frf.frf_visco`,
+``cavity=``). Not yet: the cavity in the modal reduction and the fits, a tire-file switch, the
+cross-section tire, the effect of rolling speed.
 """
 
 from __future__ import annotations
@@ -44,6 +48,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.linalg as sla
+import scipy.sparse as sp
 
 from .. import guards
 from .ring_model import UX, UZ, build_mesh
@@ -115,7 +120,8 @@ def rigid_torus_frequencies(cavity: Cavity, orders: np.ndarray | int) -> np.ndar
 @dataclass(frozen=True, eq=False)
 class CavityModes:
     """Modes of the waveguide: frequencies (Hz), pressure shapes (modes, nodes) at ``theta`` (rad,
-    from the footprint centre), and each mode's symmetry about the footprint (+1 even, -1 odd)."""
+    from the footprint centre), normalised by the waveguide's mass (:math:`\\phi^T M_a \\phi = 1`,
+    :math:`M_a = \\int A N N^T ds`), and each mode's symmetry about the footprint (+1 even, -1 odd)."""
 
     freqs: np.ndarray
     shapes: np.ndarray
@@ -131,26 +137,33 @@ class CavityModes:
         return by_parity[-1], by_parity[1]
 
 
+def waveguide_matrices(cavity: Cavity, area: np.ndarray) -> tuple[sp.csr_matrix, sp.csr_matrix]:
+    """Periodic linear elements of Webster's equation on nodes at equal angles: :math:`K_a = \\int A N' N'^T ds`
+    and :math:`M_a = \\int A N N^T ds` (element areas the mean of their nodes'), sparse."""
+    area = np.asarray(area, float)
+    if area.ndim != 1 or area.size < 32 or not np.all(np.isfinite(area)) or np.any(area <= 0):
+        raise ValueError("area must be positive and finite at >= 32 equally spaced angles (m^2)")
+    n = area.size
+    h = 2.0 * np.pi * cavity.mean_radius / n
+    a = 0.5 * (area + np.roll(area, -1))  # element e joins nodes e and e + 1
+    i, j = np.arange(n), (np.arange(n) + 1) % n
+    rows, cols = np.concatenate([i, j, i, j]), np.concatenate([i, j, j, i])
+    stiffness = sp.csr_matrix((np.concatenate([a, a, -a, -a]) / h, (rows, cols)), shape=(n, n))
+    mass = sp.csr_matrix((np.concatenate([2 * a, 2 * a, a, a]) * h / 6.0, (rows, cols)), shape=(n, n))
+    return stiffness, mass
+
+
 def webster_modes(cavity: Cavity, area: np.ndarray | None = None, n_modes: int = 7) -> CavityModes:
-    """Plane-wave modes of the cavity from Webster's equation, periodic linear elements around the axis.
+    """Plane-wave modes of the cavity from Webster's equation (:func:`waveguide_matrices`).
 
     ``area`` (m^2): the cross-section at equally spaced angles from the footprint centre (one per
     element node; default ``cavity.area`` everywhere, 720 nodes). Mode 0 (uniform pressure) is
     included. The discretisation error is ~(n dtheta)^2 / 12 relative (1e-6 at n = 1, 720 nodes).
     """
     area = np.full(720, cavity.area) if area is None else np.asarray(area, float)
-    if area.ndim != 1 or area.size < 32 or not np.all(np.isfinite(area)) or np.any(area <= 0):
-        raise ValueError("area must be positive and finite at >= 32 equally spaced angles (m^2)")
+    stiffness, mass = waveguide_matrices(cavity, area)
     n = area.size
-    h = 2.0 * np.pi * cavity.mean_radius / n
-    element_area = 0.5 * (area + np.roll(area, -1))  # element e joins nodes e and e + 1
-    stiffness = np.zeros((n, n))
-    mass = np.zeros((n, n))
-    for e, a in enumerate(element_area):
-        i, j = e, (e + 1) % n
-        stiffness[np.ix_([i, j], [i, j])] += a / h * np.array([[1.0, -1.0], [-1.0, 1.0]])
-        mass[np.ix_([i, j], [i, j])] += a * h / 6.0 * np.array([[2.0, 1.0], [1.0, 2.0]])
-    k2, shapes = sla.eigh(stiffness, mass, subset_by_index=[0, n_modes - 1])
+    k2, shapes = sla.eigh(stiffness.toarray(), mass.toarray(), subset_by_index=[0, min(n_modes, n) - 1])
     theta = 2.0 * np.pi * np.arange(n) / n
     mirror = (-np.arange(n)) % n  # theta -> -theta
     parity = np.sign(np.sum(shapes * shapes[mirror], axis=0))
@@ -178,3 +191,86 @@ def loaded_area(cavity: Cavity, static, n_nodes: int | None = None) -> np.ndarra
     if np.any(area <= 0.1 * cavity.area):
         raise ValueError("the belt's deflection closes more than 90 % of the cavity section: a non-physical load")
     return area
+
+
+#: Damping ratio of the cavity's plane-wave modes (-): measured cavity resonances of passenger
+#: tires have quality factors of ~30-60 (half-power bandwidths of 4-7 Hz at ~220 Hz; e.g. Feng &
+#: Gu, IMAC 2011, spindle and cavity-pressure spectra): zeta ~0.01.
+DAMPING_RATIO = 0.01
+
+
+@dataclass(frozen=True, eq=False)
+class CavityCoupling:
+    """The cavity's modes coupled to a ring tire's DOF (all of them, hub included).
+
+    ``wall`` (nodes, n_dof): the volume change at each waveguide node per unit displacement of
+    each DOF (m^3/m; :math:`G`), ``area`` the loaded section at the nodes (m^2);
+    ``volume`` (n_dof, modes): the modal volume change per unit displacement of each DOF,
+    :math:`\\Phi^T G` transposed (m^3 per m, in the modes' normalisation); ``omegas`` the modes'
+    angular frequencies on the loaded area (rad/s; the first is the uniform pressure, 0).
+
+    Eliminating the pressure, :math:`p = \\rho\\omega^2 c^2 \\sum_m \\phi_m \\phi_m^T G u /
+    (\\omega_m^2 (1 + 2 i \\zeta) - \\omega^2)`, adds to the tire's dynamic stiffness the
+    low-rank, frequency-dependent term :math:`-V\\,\\mathrm{diag}(c_m(\\omega))\\,V^T`
+    (:meth:`gains`): the air's stiffness and inertia seen by the belt and the rim.
+    """
+
+    volume: np.ndarray
+    omegas: np.ndarray
+    density: float
+    sound_speed: float
+    damping_ratio: float
+    modes: CavityModes
+    wall: sp.csr_matrix
+    area: np.ndarray
+
+    def gains(self, omega: float) -> np.ndarray:
+        """:math:`c_m(\\omega) = \\rho c^2 \\omega^2 / (\\omega_m^2 (1 + 2 i \\zeta) - \\omega^2)` (Pa/m^3 in
+        modal units); the uniform mode's is :math:`-\\rho c^2` (the air's compressibility)."""
+        rc2 = self.density * self.sound_speed**2
+        out = np.empty(self.omegas.size, complex)
+        rigid = self.omegas == 0.0
+        out[rigid] = -rc2
+        w2 = self.omegas[~rigid] ** 2 * (1.0 + 2j * self.damping_ratio)
+        out[~rigid] = rc2 * omega**2 / (w2 - omega**2)
+        return out
+
+
+def ring_cavity_coupling(
+    fet, static, cavity: Cavity, n_modes: int = 13, damping_ratio: float = DAMPING_RATIO
+) -> CavityCoupling:
+    """The loaded cavity of a ring tire (:func:`webster_modes` on :func:`loaded_area`, one acoustic
+    node per belt node) and its coupling with the belt's radial motion and the rim's.
+
+    A belt node of strip ``s`` moving outward by :math:`u_r` grows the cavity by
+    :math:`w_s R_{in} d\\theta\\, u_r`; the rim moving by :math:`(d_x, d_z)` shrinks it by
+    :math:`(\\sin\\theta\\, d_x - \\cos\\theta\\, d_z)\\, r_{rim} w_{rim} d\\theta` at each angle. By
+    reciprocity the same matrix gives the pressure's forces on the belt and on the rim.
+    """
+    guards.integer("n_modes", n_modes, 1, fet.mesh.n_elements)
+    guards.real("damping_ratio", damping_ratio, 0.0, 0.5, unit="-")
+    mesh = fet.mesh
+    area = loaded_area(cavity, static)
+    modes = webster_modes(cavity, area, n_modes)
+    n_nodes, dtheta = mesh.n_elements, 2.0 * np.pi / mesh.n_elements
+    theta = mesh.theta
+    # the area is on the belt's node angles: the waveguide's node k is belt node k
+    nodes = np.arange(n_nodes)
+    face = mesh.strip_width * cavity.outer_radius * dtheta
+    rim = cavity.inner_radius * static.tire.operating.rim_width * dtheta
+    rows, cols, values = [], [], []
+    for strip in range(mesh.n_strips):
+        rows += [nodes, nodes]
+        cols += [mesh.dof(strip, nodes, UX), mesh.dof(strip, nodes, UZ)]
+        values += [face * np.sin(theta), -face * np.cos(theta)]
+    hub_x, hub_z = mesh.hub_dofs[0], mesh.hub_dofs[1]
+    rows += [nodes, nodes]
+    cols += [np.full(n_nodes, hub_x), np.full(n_nodes, hub_z)]
+    values += [-rim * np.sin(theta), rim * np.cos(theta)]
+    wall = sp.csr_matrix(
+        (np.concatenate(values), (np.concatenate(rows), np.concatenate(cols))), shape=(n_nodes, fet.n_dof)
+    )
+    volume = np.asarray(wall.T @ modes.shapes.T)  # (n_dof, modes); the shapes are normalised by the waveguide's mass
+    omegas = 2.0 * np.pi * modes.freqs
+    omegas[0] = 0.0
+    return CavityCoupling(volume, omegas, cavity.density, cavity.sound_speed, damping_ratio, modes, wall, area)
