@@ -40,6 +40,18 @@ reciprocity), and eliminating the pressure leaves a low-rank, frequency-dependen
 tire's dynamic stiffness that the fixed-hub FRFs take in (:func:`.response.frf.frf_visco`,
 ``cavity=``). Not yet: the cavity in the modal reduction and the fits, a tire-file switch, the
 cross-section tire, the effect of rolling speed.
+
+**Limits found so far (a review of the physics, issue 15):**
+
+* :func:`loaded_area` counts the belt's flattening only; the sidewalls' bulge under load gives
+  some section back, so the split is overstated: 19.5 Hz on the 165/65 R14 at its 4512 N
+  (measured passenger tires: 2-14 Hz), 10.8 Hz on the 195/65 R15 at 4000 N.
+* the uniform mode's volume change per unit footprint rise is ~1e-3 m^2 where a real tire's is
+  near its contact area (1-2e-2 m^2, the pneumatic work balance): the air's compressibility adds
+  1e-4 of K_v instead of ~2 % (the sidewalls' volume change and the dynamic pressure's change of
+  the inflation pre-stress are left out).
+* the ring tire is calibrated to measured modes, which include the air: the cavity on top lowers
+  its first vertical mode by ~3 Hz (80 -> 77 Hz on the 165/65 R14) until it is recalibrated.
 """
 
 from __future__ import annotations
@@ -158,7 +170,7 @@ def webster_modes(cavity: Cavity, area: np.ndarray | None = None, n_modes: int =
 
     ``area`` (m^2): the cross-section at equally spaced angles from the footprint centre (one per
     element node; default ``cavity.area`` everywhere, 720 nodes). Mode 0 (uniform pressure) is
-    included. The discretisation error is ~(n dtheta)^2 / 12 relative (1e-6 at n = 1, 720 nodes).
+    included. The discretisation error is ~(n dtheta)^2 / 24 relative (3e-6 at n = 1, 720 nodes).
     """
     area = np.full(720, cavity.area) if area is None else np.asarray(area, float)
     stiffness, mass = waveguide_matrices(cavity, area)
@@ -243,9 +255,18 @@ def ring_cavity_coupling(
     node per belt node) and its coupling with the belt's radial motion and the rim's.
 
     A belt node of strip ``s`` moving outward by :math:`u_r` grows the cavity by
-    :math:`w_s R_{in} d\\theta\\, u_r`; the rim moving by :math:`(d_x, d_z)` shrinks it by
-    :math:`(\\sin\\theta\\, d_x - \\cos\\theta\\, d_z)\\, r_{rim} w_{rim} d\\theta` at each angle. By
+    :math:`f_b (w_s/b) d\\theta\\, u_r`; the rim moving by :math:`(d_x, d_z)` shrinks it by
+    :math:`(\\sin\\theta\\, d_x - \\cos\\theta\\, d_z)\\, f_r\\, d\\theta` at each angle. By
     reciprocity the same matrix gives the pressure's forces on the belt and on the rim.
+
+    The faces :math:`f_b, f_r` (m^2 per radian) are the radial projections of the section's walls
+    that move with the belt and with the rim: the belt's :math:`b R_{in}` and the rim's
+    :math:`w_{rim} r_{rim}`, each with half the sidewalls' projection :math:`X`. The closed section
+    fixes :math:`X`: :math:`\\oint (e_r \\cdot n)\\, r\\, dl = A` (the divergence theorem), so
+    :math:`f_b - f_r = A` and a rigid translation of the whole tire sloshes the waveguide's air
+    along the axis as the air's own mass requires (:math:`\\rho V / 2`, the axial half of it; the
+    1-D model has no transverse flow). Without the sidewalls the faces overstate the coupling by
+    18-30 % on our tires (helper review, issue 15).
     """
     guards.integer("n_modes", n_modes, 1, fet.mesh.n_elements)
     guards.real("damping_ratio", damping_ratio, 0.0, 0.5, unit="-")
@@ -256,8 +277,11 @@ def ring_cavity_coupling(
     theta = mesh.theta
     # the area is on the belt's node angles: the waveguide's node k is belt node k
     nodes = np.arange(n_nodes)
-    face = mesh.strip_width * cavity.outer_radius * dtheta
-    rim = cavity.inner_radius * static.tire.operating.rim_width * dtheta
+    belt_face = mesh.n_strips * mesh.strip_width * cavity.outer_radius
+    rim_face = cavity.inner_radius * static.tire.operating.rim_width
+    sidewalls = cavity.area - (belt_face - rim_face)  # X: the sidewalls' radial projection
+    face = (belt_face + 0.5 * sidewalls) / mesh.n_strips * dtheta  # per strip and node
+    rim = (rim_face - 0.5 * sidewalls) * dtheta
     rows, cols, values = [], [], []
     for strip in range(mesh.n_strips):
         rows += [nodes, nodes]
