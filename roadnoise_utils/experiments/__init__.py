@@ -12,6 +12,7 @@ experiment                     what it runs                                     
 :func:`calibration_table`      the tire against its calibration targets          01
 :func:`band_extension`         the chain at 0-250 and 0-400 Hz, cleat and road   10
 :func:`whole_car_run`          the whole car on a 3-D road, spectra, checks       11
+:func:`cavity.cavity_frfs`     the ring tire's FRFs with its air cavity           11
 =============================  ================================================  ==========
 
 ``*_conditions`` functions resolve a test's defaults (an argument left at ``None`` is the
@@ -21,6 +22,7 @@ paper's value); the numerics below them take explicit arguments and read no TOML
 from . import (
     bands,
     calibration,
+    cavity,
     cleat,
     conditions,
     corner,
@@ -68,6 +70,7 @@ __all__ = [
     "RoadTestConditions",
     "Suspension",
     "calibration",
+    "cavity",
     "calibration_table",
     "cleat",
     "cleat_conditions",

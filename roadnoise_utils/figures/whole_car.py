@@ -129,3 +129,41 @@ def plot_axle_coherence(check) -> plt.Axes:
     ax.set_ylim(0, 1.02)
     ax.legend()
     return ax
+
+
+def plot_cavity_split(table, measured: tuple[float, float], rated_load: float) -> plt.Figure:
+    """The loaded cavity's fore-aft and vertical modes against the load, and their split with the
+    measured range of passenger tires at rated load drawn in."""
+    fig, (left, right) = plt.subplots(1, 2, figsize=(10, 3.8))
+    load = table["load (N)"]
+    left.plot(load, table["vertical (Hz)"], "o-", color="tab:red", label="vertical (even)")
+    left.plot(load, table["fore-aft (Hz)"], "s-", color="tab:blue", label="fore-aft (odd)")
+    left.set_ylabel("cavity mode (Hz)")
+    right.plot(load, table["split (Hz)"], "o-", color="k", label="Webster, loaded section")
+    right.plot(load, table["first-order split (Hz)"], "--", color="0.5", label="first-order formula")
+    right.errorbar([rated_load], [0.5 * sum(measured)], yerr=[[0.5 * (measured[1] - measured[0])]], fmt="none",
+                   ecolor="tab:green", elinewidth=6, alpha=0.5, label="measured at rated load (Choi & Bolton 2020)")  # fmt: skip
+    right.set_ylabel("split (Hz)")
+    for ax in (left, right):
+        ax.set_xlabel("load (N)")
+        ax.legend(fontsize=8)
+    return fig
+
+
+def plot_cavity_frfs(result) -> plt.Figure:
+    """|H_tot| and |G_H| of the fixed-hub tire without and with its air cavity, the loaded doublet marked."""
+    fig, axes = plt.subplots(1, 2, figsize=(10, 3.8), sharex=True)
+    f = result.plain.freqs
+    for ax, name, label in zip(axes, ("H_tot", "G_H"), ("|H_tot| (N/m)", "|G_H| (N/m)")):
+        ax.semilogy(
+            f, np.abs(getattr(result.plain, name)), color="0.4", lw=1.0, label="without the cavity (the paper's model)"
+        )
+        ax.semilogy(f, np.abs(getattr(result.with_cavity, name)), color="tab:red", lw=1.2, label="with the cavity")
+        for k, f_mode in enumerate(result.loaded_doublet):
+            ax.axvline(
+                f_mode, color="tab:blue", ls=":", lw=0.8, label="loaded cavity: fore-aft, vertical" if k == 0 else None
+            )
+        ax.set_ylabel(label)
+        ax.set_xlabel("Frequency (Hz)")
+    axes[0].legend(fontsize=8)
+    return fig

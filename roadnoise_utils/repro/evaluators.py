@@ -16,6 +16,7 @@ import numpy as np
 
 from ..analysis import band_errors, distinct_peaks, peak_comparison, relative_rms_error, resonance_peaks
 from ..experiments.bands import cleat_chain
+from ..experiments.cavity import cavity_conditions, load_exponent, split_against_load
 from ..experiments.cleat import CleatTest, cleat_test
 from ..experiments.corner import PAPER_CAR, QuarterCarTest, quarter_car
 from ..experiments.moving_hub import moving_hub_check
@@ -191,6 +192,15 @@ def _car_coherence(model: str) -> float:
     return float(np.abs(predicted - road).max())
 
 
+@functools.cache
+def _cavity_split(model: str):
+    return split_against_load(cavity_conditions())  # ring only: the cross-section claims are n/a
+
+
+def _rated_load() -> float:
+    return float(stages.load_tire(cavity_conditions().tire).operating.vertical_load)
+
+
 EVALUATORS: dict[str, Callable[[str], float]] = {
     "fe_dof": _fe_dof,
     "n_tasselli": lambda m: float(stages.solve_static(tire_of(m)).tasselli.n),
@@ -226,4 +236,6 @@ EVALUATORS: dict[str, Callable[[str], float]] = {
     "car_notches": lambda m: float(notch_depth(_whole_car(m), 20.0)["largest at a notch / peak"].max()),
     "car_time_vs_frequency": lambda m: float((wheelbase_check(_whole_car(m)).ratios - 1.0).abs().to_numpy().max()),
     "car_coherence": _car_coherence,
+    "cavity_split": lambda m: _cavity_split(m).loc[_cavity_split(m)["load (N)"] == _rated_load(), "split (Hz)"].iloc[0],
+    "cavity_load_exponent": lambda m: load_exponent(_cavity_split(m)),
 }

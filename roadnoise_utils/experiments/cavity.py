@@ -1,0 +1,96 @@
+"""The tire's air cavity on the ring tire: its split under load and the fixed-hub FRFs with and without it (notebook 11).
+
+Reads the ``[cavity]`` table of ``data/conditions/whole_car.toml`` once
+(:func:`cavity_conditions`); the numerics are :mod:`roadnoise_utils.tire.cavity` and
+:func:`roadnoise_utils.response.frf.frf_visco` with its ``cavity`` argument.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+
+from .. import guards
+from ..repro import stages
+from ..response.frf import FRFResult, frf_visco
+from ..tire import cavity as cavity_model
+from .conditions import load_conditions, resolve
+
+
+@dataclass(frozen=True)
+class CavityConditions:
+    """The cavity's test: tire file, loads (N), FRF band (Hz), air temperature (deg C)."""
+
+    tire: str
+    loads: tuple[float, ...]
+    band: tuple[float, float]
+    temperature: float
+
+
+def cavity_conditions(tire: str | None = None) -> CavityConditions:
+    """``[cavity]`` of ``data/conditions/whole_car.toml`` (read once), ``tire`` overriding its tire."""
+    values = resolve(load_conditions("whole_car"), "cavity", tire=tire, loads=None, band=None, temperature=None)
+    loads = tuple(guards.real("cavity.loads", v, 0.0, 2.0e4, lo_open=True, unit="N") for v in values["loads"])
+    if len(loads) < 2:
+        raise ValueError(f"cavity.loads = {list(loads)}: give at least two loads (N) for the split against the load")
+    band = guards.interval("cavity.band", values["band"])
+    return CavityConditions(str(values["tire"]), loads, band, guards.real("cavity.temperature", values["temperature"]))
+
+
+def split_against_load(conditions: CavityConditions | None = None) -> pd.DataFrame:
+    """The loaded cavity's first doublet at each load: fore-aft and vertical frequency (Hz), their split,
+    the first-order formula's split (module notes of :mod:`.tire.cavity`) and the static deflection (mm)."""
+    test = cavity_conditions() if conditions is None else conditions
+    spec = stages.load_tire(test.tire)
+    cav = cavity_model.ring_tire_cavity(spec, test.temperature)
+    f1 = float(cavity_model.rigid_torus_frequencies(cav, 1)[0])
+    rows = []
+    for load in test.loads:
+        static = stages.solve_static(spec, load=load)
+        area = cavity_model.loaded_area(cav, static)
+        fore_aft, vertical = cavity_model.webster_modes(cav, area).split()
+        theta = 2.0 * np.pi * np.arange(area.size) / area.size
+        ds = 2.0 * np.pi * cav.mean_radius / area.size
+        first_order = np.sum((cav.area - area) * np.cos(2 * theta)) * ds / (np.pi * cav.mean_radius * cav.area) * f1
+        rows.append(
+            {
+                "load (N)": load,
+                "deflection (mm)": 1e3 * static.deflection,
+                "fore-aft (Hz)": fore_aft,
+                "vertical (Hz)": vertical,
+                "split (Hz)": vertical - fore_aft,
+                "first-order split (Hz)": first_order,
+            }
+        )
+    return pd.DataFrame(rows)
+
+
+def load_exponent(table: pd.DataFrame) -> float:
+    """The exponent of a power law ``split ~ load^k`` fitted to :func:`split_against_load` (log-log least squares)."""
+    return float(np.polyfit(np.log(table["load (N)"]), np.log(table["split (Hz)"]), 1)[0])
+
+
+@dataclass(frozen=True, eq=False)
+class CavityFRFs:
+    """The tire on the flat road at its file's load: fixed-hub FRFs without and with the cavity, and the rigid torus's first mode (Hz)."""
+
+    plain: FRFResult
+    with_cavity: FRFResult
+    rigid_torus: float
+    loaded_doublet: tuple[float, float]
+
+
+def cavity_frfs(conditions: CavityConditions | None = None, step: float = 1.0) -> CavityFRFs:
+    """``H_tot`` and ``G_H`` over the band every ``step`` Hz, without and with the cavity (13 waveguide modes)."""
+    test = cavity_conditions() if conditions is None else conditions
+    spec = stages.load_tire(test.tire)
+    fet, static = stages.build_fet(spec), stages.solve_static(spec)
+    cav = cavity_model.ring_tire_cavity(spec, test.temperature)
+    coupling = cavity_model.ring_cavity_coupling(fet, static, cav)
+    freqs = np.arange(test.band[0], test.band[1] + 0.5 * step, step)
+    plain = frf_visco(fet, static, freqs, progress=False)
+    with_cavity = frf_visco(fet, static, freqs, progress=False, cavity=coupling)
+    doublet = cavity_model.webster_modes(cav, coupling.area).split()
+    return CavityFRFs(plain, with_cavity, float(cavity_model.rigid_torus_frequencies(cav, 1)[0]), doublet)
