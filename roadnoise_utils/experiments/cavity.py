@@ -16,6 +16,7 @@ from .. import guards
 from ..repro import stages
 from ..response.frf import FRFResult, frf_visco
 from ..tire import cavity as cavity_model
+from ..tire.spec import TireSpec
 from .conditions import load_conditions, resolve
 
 
@@ -94,3 +95,19 @@ def cavity_frfs(conditions: CavityConditions | None = None, step: float = 1.0) -
     with_cavity = frf_visco(fet, static, freqs, progress=False, cavity=coupling)
     doublet = cavity_model.webster_modes(cav, coupling.area).split()
     return CavityFRFs(plain, with_cavity, float(cavity_model.rigid_torus_frequencies(cav, 1)[0]), doublet)
+
+
+def with_cavity(tire: str) -> TireSpec:
+    """The tire file with its air cavity switched on (``[cavity] enabled = true``), every other value as the file's."""
+    return stages.load_tire(tire).replace(**{"cavity.enabled": True})
+
+
+def chain_check(tire: TireSpec, freqs: np.ndarray) -> float:
+    """Largest difference of the RM chain's fixed-hub :math:`H_{tot}` (the fits summed, Eq. 1-3) from the
+    direct one, relative to the direct one's peak over ``freqs`` (Hz): how well the fits carry the cavity."""
+    fits = stages.fit_tasselli(tire)
+    direct = stages.frf_visco(tire).H_tot
+    grid = stages.frf_visco(tire).freqs
+    on = np.isin(grid, freqs)
+    chain = fits.responses(grid[on]).sum(axis=0)
+    return float(np.abs(chain - direct[on]).max() / np.abs(direct[on]).max())

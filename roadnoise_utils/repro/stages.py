@@ -46,11 +46,12 @@ from ..road import input as road_input
 from ..road.cleat import cleat_input, cleat_profile
 from ..road.input import BAND, RoadInput
 from ..road.textures import RoadProfile, RoadSpectrum
+from ..tire import cavity as cavity_model
 from ..tire import ring_model, section_static, spec, static
 from ..tire.cross_section import CrossSectionSpec
 from ..tire.ring_model import FETModel
 from ..tire.section_static import SectionStaticState
-from ..tire.spec import TireSpec
+from ..tire.spec import NO_CAVITY, TireSpec
 from ..tire.static import StaticState
 from . import section_stages
 from .cache import cached
@@ -164,11 +165,39 @@ def frf_visco(
     state = solve_static(tire, road, load, drum_radius)
 
     def compute() -> FRFResult:
-        return frf.frf_visco(build_fet(inputs["tire"]), state, freqs, progress=progress, stick=stick)
+        fet = build_fet(inputs["tire"])
+        coupling = _cavity_coupling(inputs["tire"], fet, state)
+        return frf.frf_visco(fet, state, freqs, progress=progress, stick=stick, cavity=coupling)
 
     return cached(
-        frf_visco, {**inputs, "freqs": freqs, "stick": stick}, compute, runs=(frf.frf_visco, static.solve_static)
+        frf_visco,
+        {**inputs, "freqs": freqs, "stick": stick},
+        compute,
+        runs=(frf.frf_visco, static.solve_static, cavity_model.ring_cavity_coupling),
     )
+
+
+def _cavity_coupling(spec: TireSpec, fet: FETModel, state: StaticState) -> cavity_model.CavityCoupling | None:
+    """The air cavity of a ring tire file whose ``[cavity]`` is enabled (else None: the paper's model)."""
+    air = spec.cavity
+    if not air.enabled:
+        return None
+    cav = cavity_model.ring_tire_cavity(spec, air.temperature)
+    return cavity_model.ring_cavity_coupling(fet, state, cav, n_modes=air.modes, damping_ratio=air.damping_ratio)
+
+
+def has_cavity(tire: Tire) -> bool:
+    """Whether the tire file couples its air cavity (``[cavity] enabled``; cross-section tires: not yet)."""
+    return bool(getattr(load_tire(tire), "cavity", NO_CAVITY).enabled)
+
+
+def _no_cavity(tire: Tire, stage: str) -> None:
+    """Refuse a cavity-coupled tire in a stage whose FE numerics do not carry the cavity yet."""
+    if has_cavity(tire):
+        raise ValueError(
+            f"{stage}: the FE numerics of this stage do not include the air cavity yet; valid tires have "
+            "[cavity] enabled = false (the cavity reaches the direct FRFs, the fits and the RM chain)"
+        )
 
 
 def loaded_modes(
@@ -179,8 +208,9 @@ def loaded_modes(
     load: float | None = None,
     drum_radius: float | None = None,
 ) -> LoadedModes:
-    """Cached :func:`roadnoise_utils.response.modes.loaded_modes` (ring tires)."""
+    """Cached :func:`roadnoise_utils.response.modes.loaded_modes` (ring tires, without the cavity)."""
     _ring_only(tire, "loaded_modes")
+    _no_cavity(tire, "loaded_modes")
     inputs = _loaded(tire, road, load, drum_radius)
     options = {"n_modes": int(n_modes), "reference_frequency": float(reference_frequency)}
     state = solve_static(tire, road, load, drum_radius)
@@ -211,6 +241,7 @@ def modal_reduction(
     options = {"frozen": frozen, "damping": damping, "reference_frequency": reference_frequency, "f_band": f_band}
     if is_cross_section(tire):
         return section_stages.section_modal(tire, road, load=load, drum_radius=drum_radius, **options)
+    _no_cavity(tire, "modal_reduction")
     inputs = _loaded(tire, road, load, drum_radius)
     state = solve_static(tire, road, load, drum_radius)
     visco = frf_visco(tire, road, load=load, drum_radius=drum_radius)
@@ -307,6 +338,7 @@ def fe_cleat_response(
         road = cleat_input(state, speed, height, base, shape, distance)
         frfs = section_stages.tassello_frfs(tire, "drum", drum_radius=drum_radius)
         return road, fe_reference.frequency_domain_response(frfs, road.u, road.dt, band, duration)
+    _no_cavity(tire, "fe_cleat_response")
     inputs = {
         **_loaded(tire, "drum", None, drum_radius),
         "speed": float(speed),
@@ -345,6 +377,7 @@ def one_sided_run(
     time step (s; default :data:`roadnoise_utils.response.one_sided.DT_MAX` or finer). Ring tires.
     """
     _ring_only(tire, "one_sided_run")
+    _no_cavity(tire, "one_sided_run")
     inputs = {
         **_loaded(tire, "drum", None, drum_radius),
         "speed": float(speed),

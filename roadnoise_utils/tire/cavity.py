@@ -111,12 +111,13 @@ class Cavity:
         return 2.0 * np.pi * self.mean_radius * self.area
 
 
-def ring_tire_cavity(spec: TireSpec, temperature: float = 20.0) -> Cavity:
+def ring_tire_cavity(spec: TireSpec, temperature: float | None = None) -> Cavity:
     """The cavity of a ring tire file: from the rim to the belt's inner surface (its centre line less
     half the belt, taken as a third of the tread thickness), as wide as the mean of the rim and the
-    section widths, filled with air at the inflation pressure."""
+    section widths, filled with air at the inflation pressure and at ``temperature`` (deg C; default
+    the tire file's ``[cavity] temperature``)."""
     g = spec.geometry
-    c, rho = air(temperature, spec.operating.inflation_pressure)
+    c, rho = air(spec.cavity.temperature if temperature is None else temperature, spec.operating.inflation_pressure)
     belt_inner = g.belt_radius - g.tread_thickness / 3.0
     width = 0.5 * (spec.operating.rim_width + g.section_width)
     return Cavity(g.rim_radius, belt_inner, width, c, rho)

@@ -144,6 +144,25 @@ class Tassellation:
     strips_per_column: int = param("-", 1, 10, "belt strips grouped into one column of tasselli", integer=True)
 
 
+def flag(doc: str) -> Any:
+    """Declare a true/false field of a tire file."""
+    return field(metadata={"unit": "-", "range": (0, 1), "doc": doc, "integer": False, "boolean": True})
+
+
+@dataclass(frozen=True)
+class AirCavity:
+    """The tire's air cavity (beyond the paper; :mod:`.cavity`). Optional in a tire file: absent, it is off."""
+
+    enabled: bool = flag("couple the air cavity's plane-wave modes to the tire (false: the paper's model)")
+    temperature: float = param("deg C", -40.0, 120.0, "temperature of the inflation air")
+    damping_ratio: float = param("-", 0.0, 0.2, "damping ratio of the cavity's modes")
+    modes: int = param("-", 1, 60, "plane-wave modes kept, the uniform one included (13: to ~1.3 kHz)", integer=True)
+
+
+#: The cavity of a tire file without a ``[cavity]`` table: off (the paper's model).
+NO_CAVITY = AirCavity(enabled=False, temperature=20.0, damping_ratio=0.01, modes=13)
+
+
 @dataclass(frozen=True)
 class Compound:
     """Fractional-Zener parameters of one rubber compound (see :mod:`.viscoelastic`)."""
@@ -174,6 +193,7 @@ class TireSpec:
     tread: Tread
     tasselli: Tassellation
     compounds: dict[str, Compound]
+    cavity: AirCavity = NO_CAVITY
     source: str = field(default="", metadata={"identity": False})  # where it was read from: not part of its identity
 
     #: The tire model this file builds (``[tire] model``).
@@ -264,6 +284,11 @@ def build_section(cls: type, values: Any, where: str, source: str) -> Any:
                 f"{source}: [{where}] is missing {f.name!r} ({meta['doc']}; {unit}, valid range [{lo:g}, {hi:g}])"
             )
         value = values[f.name]
+        if meta.get("boolean"):
+            if not isinstance(value, bool):
+                raise ValueError(f"{source}: [{where}] {f.name} = {value!r} must be true or false ({meta['doc']})")
+            kwargs[f.name] = value
+            continue
         if isinstance(value, bool) or not isinstance(value, numbers.Real):
             raise ValueError(f"{source}: [{where}] {f.name} = {value!r} must be a number ({unit})")
         if meta["integer"] and not float(value).is_integer():
@@ -310,6 +335,7 @@ def from_dict(data: dict[str, Any], source: str = "<dict>") -> TireSpec:
     """Validate nested data (the TOML layout) and build a :class:`TireSpec`."""
     expected = {"tire", "compounds", *SECTIONS}
     missing = sorted(expected - set(data))
+    expected.add("cavity")  # optional
     if missing:
         raise ValueError(f"{source}: missing section(s) {['[' + m + ']' for m in missing]}")
     unknown = sorted(set(data) - expected)
@@ -329,7 +355,8 @@ def from_dict(data: dict[str, Any], source: str = "<dict>") -> TireSpec:
     compounds = {
         key: build_section(Compound, value, f"compounds.{key}", source) for key, value in sorted(compounds_data.items())
     }
-    spec = TireSpec(name=name, compounds=compounds, source=source, **sections)
+    cavity = build_section(AirCavity, data["cavity"], "cavity", source) if "cavity" in data else NO_CAVITY
+    spec = TireSpec(name=name, compounds=compounds, cavity=cavity, source=source, **sections)
     _check_consistency(spec, source)
     return spec
 
