@@ -26,6 +26,7 @@ import pandas as pd
 from .. import guards
 from ..analysis import damped_components, force_peaks, relative_rms_error
 from ..repro import stages
+from ..repro.cache import cached
 from ..response.fe_reference import band_limited, record_length
 from ..response.frf import frf_visco
 from ..rm.simulation import ModalSections, SimulationResult, modal_sections, simulate
@@ -353,12 +354,23 @@ def cleat_test(
     system = stages.assemble_fixed_hub(spec, n_poles=n_poles, **drum)
     sections = modal_sections(system)
     cleat = {"height": test.height, "base": test.base, "shape": test.shape}
-    quasi = run_cleat(
-        sections, static, test.quasi_static_speed, **cleat, distance=test.quasi_static_distance, dynamic=False
+
+    def runs() -> tuple[CleatRun, CleatRun]:
+        quasi = run_cleat(
+            sections, static, test.quasi_static_speed, **cleat, distance=test.quasi_static_distance, dynamic=False
+        )
+        decay_end = footprint_exit(static, test.base) + 0.01 + test.dynamic_speed * DECAY_DURATION
+        dynamic_distance = (test.dynamic_distance[0], max(test.dynamic_distance[1], decay_end))
+        dynamic = run_cleat(sections, static, test.dynamic_speed, **cleat, distance=dynamic_distance, dynamic=True)
+        return quasi, dynamic
+
+    # cached: the notebooks and the claims run the same test (the simulations cost ~1 s a tire)
+    quasi, dynamic = cached(
+        "cleat_runs",
+        {"tire": spec, "conditions": test, "n_poles": n_poles},
+        runs,
+        runs=(run_cleat, simulate, cleat_input, *stages.frf_runs(spec)),
     )
-    decay_end = footprint_exit(static, test.base) + 0.01 + test.dynamic_speed * DECAY_DURATION
-    dynamic_distance = (test.dynamic_distance[0], max(test.dynamic_distance[1], decay_end))
-    dynamic = run_cleat(sections, static, test.dynamic_speed, **cleat, distance=dynamic_distance, dynamic=True)
     comparison = None
     if fe_reference:
         road, fe_force = stages.fe_cleat_response(

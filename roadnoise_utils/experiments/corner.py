@@ -137,11 +137,37 @@ def quarter_car(
         start = time.perf_counter()
         runs[name] = run_corner(setup.sections, setup.model, texture_run(setup.static, spectrum, test, lateral))
         seconds[name] = time.perf_counter() - start
-    return QuarterCarTest(
-        setup=setup,
-        conditions=test,
-        runs=runs,
-        spectra={name: spectra(run) for name, run in runs.items()},
-        seconds=seconds,
-        lateral=lateral,
-    )
+    found = {name: spectra(run) for name, run in runs.items()}
+    _spectra_stage(setup, test, lateral, lambda: found)  # kept for quarter_car_spectra (the claims)
+    return QuarterCarTest(setup=setup, conditions=test, runs=runs, spectra=found, seconds=seconds, lateral=lateral)
+
+
+def _spectra_stage(setup: CornerSetup, test: RoadTestConditions, lateral: bool, compute) -> dict:
+    from ..repro.cache import cached
+    from ..rm import simulation
+    from ..road import input as road_input
+    from ..vehicle import corner as corner_module
+
+    inputs = {"vehicle": setup.vehicle, "tire": setup.tire, "conditions": test, "lateral": bool(lateral)}
+    runs = (corner_module, simulation, road_input, texture_run, *stages.frf_runs(setup.tire))
+    return cached("quarter_car_spectra", inputs, compute, runs=runs)
+
+
+def quarter_car_spectra(
+    vehicle: str | QuarterCar = PAPER_CAR,
+    conditions: RoadTestConditions | None = None,
+    lateral: bool = True,
+    tire: str | None = None,
+) -> dict[str, dict[str, tuple[np.ndarray, np.ndarray]]]:
+    """The spectra of :func:`quarter_car` (texture -> output -> (freqs, PSD)), cached: a run of the same
+    test (notebook 07) leaves them for the claims."""
+    setup = corner_setup(vehicle, tire)
+    test = road_test_conditions() if conditions is None else conditions
+
+    def compute() -> dict:
+        return {
+            name: spectra(run_corner(setup.sections, setup.model, texture_run(setup.static, spectrum, test, lateral)))
+            for name, spectrum in test.spectra().items()
+        }
+
+    return _spectra_stage(setup, test, lateral, compute)

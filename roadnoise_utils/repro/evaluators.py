@@ -18,9 +18,10 @@ from ..analysis import band_errors, distinct_peaks, peak_comparison, relative_rm
 from ..experiments.bands import cleat_chain
 from ..experiments.cavity import cavity_conditions, load_exponent, split_against_load
 from ..experiments.cleat import CleatTest, cleat_test
-from ..experiments.corner import PAPER_CAR, QuarterCarTest, quarter_car
+from ..experiments.corner import PAPER_CAR, corner_setup, quarter_car_spectra
 from ..experiments.moving_hub import moving_hub_check
 from ..experiments.one_sided_cleat import OneSidedCleatTest, one_sided_cleat_test
+from ..experiments.road import road_test_conditions
 from ..experiments.section_contact import section_cleat_test
 from ..experiments.whole_car import (
     WholeCarSetup,
@@ -76,8 +77,9 @@ def _contact(model: str) -> OneSidedCleatTest:
 
 
 @functools.cache
-def _quarter_car(model: str) -> QuarterCarTest:
-    return quarter_car(PAPER_CAR, tire=tire_of(model, "check"))
+def _quarter_car(model: str) -> dict:
+    """The road test's spectra on ``model``'s check tire (cached with notebook 07's run)."""
+    return quarter_car_spectra(PAPER_CAR, tire=tire_of(model, "check"))
 
 
 def transmissibility_bands() -> dict[str, FrequencyBand]:
@@ -159,18 +161,18 @@ def _resolution(model: str) -> float:
 
 
 def _fig14_modes(model: str) -> float:
-    test = _quarter_car(model)
+    setup, test = corner_setup(PAPER_CAR, tire_of(model, "check")), road_test_conditions()
     f = np.arange(40.0, 221.0, 1.0)
-    psd = test.setup.predicted(f, test.conditions.spectra()["rough"], test.conditions.speed)["a_hub"]
+    psd = setup.predicted(f, test.spectra()["rough"], test.speed)["a_hub"]
     return float(resonance_peaks(f, np.sqrt(psd), min_ratio=0.0)[0].size)
 
 
 def _hub_rms(model: str, texture: str) -> float:
-    return band_rms(_quarter_car(model).spectra[texture]["a_hub"])
+    return band_rms(_quarter_car(model)[texture]["a_hub"])
 
 
 def _low_share(model: str, texture: str, output: str) -> float:
-    return power_share(_quarter_car(model).spectra[texture][output], 0.0, 50.0)
+    return power_share(_quarter_car(model)[texture][output], 0.0, 50.0)
 
 
 def _two_peaks(model: str, which: str) -> float:

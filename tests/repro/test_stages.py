@@ -39,13 +39,14 @@ def _fe_cleat_peak() -> float:
 
 
 def test_editing_the_cleat_conditions_recomputes_only_the_cleat_response(data_copy):
-    """The issue's stale-cache case: shape = "rectangle" in the conditions file must change the FE cleat force."""
+    """The issue's stale-cache case: shape = "rectangle" in the conditions file must change the FE cleat
+    force and the RM chain's runs (both cached), nothing else."""
     triangle, computed = _computed_during(_fe_cleat_peak)
-    assert computed == {"solve_static", "frf_visco", "fit_tasselli", "fe_cleat_response"}
+    assert computed == {"solve_static", "frf_visco", "fit_tasselli", "cleat_runs", "fe_cleat_response"}
     conditions = data_copy / "conditions" / "cleat_test.toml"
     conditions.write_text(conditions.read_text().replace('shape = "triangle"', 'shape = "rectangle"'))
     rectangle, computed = _computed_during(_fe_cleat_peak)
-    assert computed == {"fe_cleat_response"}  # the drum's static state, FRFs and fits are reused
+    assert computed == {"cleat_runs", "fe_cleat_response"}  # the drum's static state, FRFs and fits are reused
     # a rectangle of the same base and height carries twice the area: the linear force roughly doubles
     assert 1.5 < rectangle / triangle < 2.2
 
