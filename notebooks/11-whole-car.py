@@ -315,6 +315,20 @@ for _, row in split.iterrows():
 print(f"split ~ load^{ru.experiments.cavity.load_exponent(split):.2f}")
 
 # %% [markdown]
+# Rolling, the air turns with the tire while the flattened section stays under the axle: seen
+# from the hub the air streams through the footprint, and the convected Webster equation turns
+# the standing doublet into two waves running with and against the rotation, at
+# $\bar f \pm \sqrt{(\Delta_0/2)^2 + f_{rot}^2}$ ($f_{rot}$ the wheel's rotation frequency,
+# $\Delta_0$ the split at rest):
+
+# %%
+# NBVAL_CHECK_OUTPUT
+# The loaded doublet of the rolling tire (the air streaming through the fixed footprint)
+for _, row in ru.experiments.cavity.rolling_split(cavity_test).iterrows():
+    print(f"{row['speed (km/h)']:5.0f} km/h (rotation {row['rotation (Hz)']:4.1f} Hz): {row['lower (Hz)']:6.1f} and "
+          f"{row['upper (Hz)']:6.1f} Hz, {row['separation (Hz)']:4.1f} Hz apart (closed form {row['closed form (Hz)']:4.1f})")  # fmt: skip
+
+# %% [markdown]
 # At the tire file's load the split lies inside the 2-14 Hz measured on passenger tires (Choi &
 # Bolton, INTER-NOISE 2020 and AIP Advances 2026), the fore-aft mode below the vertical one as
 # measured. It grows in proportion to the load, where the measurements grow nearly
@@ -402,9 +416,9 @@ fig.suptitle(f"the car at {speed_kmh:.0f} km/h on the 2-D {texture} road, its ti
 plt.show()
 
 # %% [markdown]
-# Still to come: the cavity on the cross-section tire, its shift with rolling speed (the air
-# turns with the tire), and the FE stages that step or reduce the tire itself (they refuse a
-# tire with the cavity for now). The ring tire was calibrated against measured modes that
+# Still to come: the cavity on the cross-section tire, its rolling split in the FRFs (above it is
+# the waveguide's alone) and against a published rolling measurement, and the FE stages that
+# step or reduce the tire itself (they refuse a tire with the cavity for now). The ring tire was calibrated against measured modes that
 # already include the air, so with the cavity its first vertical mode drops by ~3 Hz until it
 # is recalibrated.
 #
@@ -455,4 +469,4 @@ _ = interact(
 )
 
 # %% [markdown]
-# **Next:** the air cavity on the cross-section tire and with rolling speed.
+# **Next:** the air cavity on the cross-section tire, and rolling in the FRFs.

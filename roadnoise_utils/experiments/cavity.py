@@ -22,22 +22,27 @@ from .conditions import load_conditions, resolve
 
 @dataclass(frozen=True)
 class CavityConditions:
-    """The cavity's test: tire file, loads (N), FRF band (Hz), air temperature (deg C)."""
+    """The cavity's test: tire file, loads (N), FRF band (Hz), air temperature (deg C), rolling speeds (km/h)."""
 
     tire: str
     loads: tuple[float, ...]
     band: tuple[float, float]
     temperature: float
+    speeds_kmh: tuple[float, ...]
 
 
 def cavity_conditions(tire: str | None = None) -> CavityConditions:
     """``[cavity]`` of ``data/conditions/whole_car.toml`` (read once), ``tire`` overriding its tire."""
-    values = resolve(load_conditions("whole_car"), "cavity", tire=tire, loads=None, band=None, temperature=None)
+    values = resolve(
+        load_conditions("whole_car"), "cavity", tire=tire, loads=None, band=None, temperature=None, speeds_kmh=None
+    )
     loads = tuple(guards.real("cavity.loads", v, 0.0, 2.0e4, lo_open=True, unit="N") for v in values["loads"])
     if len(loads) < 2:
         raise ValueError(f"cavity.loads = {list(loads)}: give at least two loads (N) for the split against the load")
     band = guards.interval("cavity.band", values["band"])
-    return CavityConditions(str(values["tire"]), loads, band, guards.real("cavity.temperature", values["temperature"]))
+    speeds = tuple(guards.real("cavity.speeds_kmh", v, 0.0, 300.0, unit="km/h") for v in values["speeds_kmh"])
+    temperature = guards.real("cavity.temperature", values["temperature"])
+    return CavityConditions(str(values["tire"]), loads, band, temperature, speeds)
 
 
 def split_against_load(conditions: CavityConditions | None = None) -> pd.DataFrame:
@@ -111,3 +116,29 @@ def chain_check(tire: TireSpec, freqs: np.ndarray) -> float:
     on = np.isin(grid, freqs)
     chain = fits.responses(grid[on]).sum(axis=0)
     return float(np.abs(chain - direct[on]).max() / np.abs(direct[on]).max())
+
+
+def rolling_split(conditions: CavityConditions | None = None) -> pd.DataFrame:
+    """The loaded cavity's first doublet at each rolling speed (:func:`.tire.cavity.rolling_modes`): the
+    wheel's rotation frequency, the two frequencies and their separation (Hz), with the closed form
+    :math:`2\\sqrt{(\\Delta_0/2)^2 + f_{rot}^2}`."""
+    test = cavity_conditions() if conditions is None else conditions
+    spec = stages.load_tire(test.tire)
+    cav = cavity_model.ring_tire_cavity(spec, test.temperature)
+    area = cavity_model.loaded_area(cav, stages.solve_static(spec))
+    rows = []
+    for kmh in test.speeds_kmh:
+        flow = kmh / 3.6 * cav.mean_radius / spec.geometry.outer_radius  # the air turns with the wheel
+        rest, rolling = cavity_model.rolling_modes(cav, area, flow)
+        f_rot = flow / (2.0 * np.pi * cav.mean_radius)
+        rows.append(
+            {
+                "speed (km/h)": kmh,
+                "rotation (Hz)": f_rot,
+                "lower (Hz)": rolling[0],
+                "upper (Hz)": rolling[1],
+                "separation (Hz)": rolling[1] - rolling[0],
+                "closed form (Hz)": 2.0 * np.sqrt((0.5 * (rest[1] - rest[0])) ** 2 + f_rot**2),
+            }
+        )
+    return pd.DataFrame(rows)

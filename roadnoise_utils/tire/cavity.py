@@ -330,3 +330,43 @@ def ring_cavity_coupling(
     omegas = 2.0 * np.pi * modes.freqs
     omegas[0] = 0.0
     return CavityCoupling(volume, omegas, cavity.density, cavity.sound_speed, damping_ratio, modes, wall, area)
+
+
+def rolling_modes(
+    cavity: Cavity, area: np.ndarray, flow_speed: float, n_basis: int = 13
+) -> tuple[np.ndarray, np.ndarray]:
+    """Plane-wave frequencies (Hz) of the loaded cavity whose air streams through the fixed footprint.
+
+    Rolling, the air turns with the tire while the loaded section :math:`A(\\\\theta)` stays put under
+    the axle: seen from the hub the air flows around the waveguide at ``flow_speed``
+    :math:`U = \\\\Omega R` (m/s). The convected Webster equation
+    :math:`\\\\frac{1}{c^2}(\\\\partial_t + U\\\\partial_s)^2 p = \\\\frac{1}{A}(A p')'` couples the standing
+    waves, and on a uniform torus each doublet becomes two travelling waves at
+    :math:`f_n (1 \\\\pm U/c)`: the doublet's split, the footprint's at rest, turns into one that
+    grows with the speed. With :math:`U = \\Omega R` the shift :math:`f_1 U/c` is the wheel's rotation
+    frequency :math:`\\Omega/2\\pi` whatever the size, and on the loaded torus the first doublet is
+    close to :math:`\\bar f \\pm \\sqrt{(\\Delta_0/2)^2 + (\\Omega/2\\pi)^2}` (:math:`\\Delta_0` its split at
+    rest). Solved on the ``n_basis`` lowest modes at rest (the quadratic eigenvalue problem
+    linearised); returns the frequencies at rest and rolling, both ascending, from the first doublet
+    on (the uniform mode left out).
+    """
+    beta = guards.real("flow_speed", flow_speed, 0.0, 0.5 * cavity.sound_speed, unit="m/s (half the speed of sound)")
+    beta /= cavity.sound_speed
+    stiffness, _ = waveguide_matrices(cavity, area)
+    n = area.size
+    a = 0.5 * (area + np.roll(area, -1))
+    i, j = np.arange(n), (np.arange(n) + 1) % n
+    # convection, int A N_i N_j' ds on each element: [[-1, 1], [-1, 1]] a / 2
+    rows, cols = np.concatenate([i, i, j, j]), np.concatenate([i, j, i, j])
+    convection = sp.csr_matrix((np.concatenate([-a, a, -a, a]) / 2.0, (rows, cols)), shape=(n, n))
+    rest = webster_modes(cavity, area, n_basis)
+    phi = rest.shapes.T  # (n, m), mass-normalised
+    lam = np.diag(phi.T @ (stiffness @ phi))  # k_m^2 (1/m^2)
+    g = phi.T @ (convection @ phi)  # skew-symmetric
+    # (x^2 - 2 i beta x g... ) in x = omega / c: x^2 I - 2 i beta x G - (1 - beta^2) K = 0, linearised
+    m = lam.size
+    companion = np.block([[np.zeros((m, m)), np.eye(m)], [(1.0 - beta**2) * np.diag(lam), 2j * beta * g]])
+    x = np.linalg.eigvals(companion)
+    # the uniform mode's double root at 0 (and round-off about it) is left out
+    freqs = np.sort(x.real[x.real > 1e-3 * np.sqrt(lam[1])]) * cavity.sound_speed / (2.0 * np.pi)
+    return rest.freqs[1:], freqs[: m - 1]

@@ -128,3 +128,26 @@ def test_sidewall_gain_is_the_bulging_arcs_area_by_a_second_method(spec):
     gain = (enclosed(edge - [step, 0.0]) - enclosed(edge + [step, 0.0])) / (2 * step)
     assert cavity.sidewall_gain(spec, cav) == pytest.approx(gain, rel=0.01)
     assert 0.3 < 2 * gain / g.belt_width < 0.7
+
+
+def test_rolling_splits_each_doublet_by_the_wheels_rotation(spec):
+    """The air streaming through the fixed footprint: on a uniform torus the first doublet goes to
+    f1 (1 -/+ U/c) (1e-5); at rest the loaded split is the standing waves'; rolling, the loaded doublet
+    sits at f_mean -/+ sqrt((split/2)^2 + f_rot^2) with f_rot = U / (2 pi R) the rotation frequency (2 %)."""
+    cav = cavity.ring_tire_cavity(spec)
+    f1 = cavity.rigid_torus_frequencies(cav, 1)[0]
+    beta = 20.0 / cav.sound_speed
+    _, uniform = cavity.rolling_modes(cav, np.full(720, cav.area), 20.0)
+    np.testing.assert_allclose(uniform[:2], [f1 * (1 - beta), f1 * (1 + beta)], rtol=1e-5)
+    area = cavity.loaded_area(cav, stages.solve_static(spec))
+    fore_aft, vertical = cavity.webster_modes(cav, area).split()
+    _, still = cavity.rolling_modes(cav, area, 0.0)
+    np.testing.assert_allclose(still[:2], [fore_aft, vertical], rtol=1e-6)
+    flow = 15.0
+    f_rot = flow / (2 * np.pi * cav.mean_radius)
+    _, rolling = cavity.rolling_modes(cav, area, flow)
+    half = np.sqrt((0.5 * (vertical - fore_aft)) ** 2 + f_rot**2)
+    mean = 0.5 * (vertical + fore_aft)
+    np.testing.assert_allclose(rolling[:2], [mean - half, mean + half], rtol=0.02 * half / mean)
+    with pytest.raises(ValueError, match="flow_speed"):
+        cavity.rolling_modes(cav, area, 400.0)
