@@ -50,6 +50,18 @@ def test_readme_own_road_snippet(tire, fet, flat):
     assert force.size > 1000 and np.all(np.isfinite(force)) and np.std(force) > 0
 
 
+def test_readme_own_car_snippet():
+    """The README's whole-car walk, as written (10 s at 120 km/h, four corners): every output's spectrum
+    and the axles' coherence come back finite."""
+    snippet = README.split("**Your own car", 1)[1].split("```python", 1)[1].split("```", 1)[0]
+    namespace = {"ru": ru}
+    exec(compile(snippet, "README", "exec"), namespace)  # the README's code, as written
+    run = namespace["run"]
+    assert run.spectra.psd["a_hub_FL"].shape == run.spectra.freqs.shape and len(run.spectra.psd) == 18
+    assert all(np.all(np.isfinite(v)) for v in run.spectra.psd.values())
+    assert 0.0 <= run.spectra.force_coherence["front"].min() and run.spectra.force_coherence["front"].max() <= 1.0
+
+
 def test_readme_own_tire_snippet():
     """The README's Python walk through the stages, as written, on the paper's tire file."""
     snippet = README.split("**Your own tire.**", 1)[1].split("```python", 1)[1].split("```", 1)[0]
