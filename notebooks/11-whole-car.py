@@ -249,25 +249,13 @@ print(f"above 10 Hz: predicted below {coh.predicted[coh.freqs > 10].max():.3f}")
 # The car on the cross-section tire (cached stages; its shoulder tasselli warn that no fit order reaches 1 %)
 section = whole_car.whole_car_setup(test.car, tire="195_65R15_cross_section")
 f_both = np.arange(0.5, 250.0, 0.5)
-both = {}
-for label, s in (("ring tire", setup), ("cross-section tire", section)):
-    fits = s.tire.fits
-    both[label] = full_car.predicted_psd_2d(
-        f_both, fits.responses(f_both), s.tire.static, test.spectrum, test.speed_kmh / 3.6, s.model, car.wheelbase
-    )
+both = whole_car.predicted_2d(
+    {"ring tire": setup, "cross-section tire": section}, test.spectrum, test.speed_kmh / 3.6, f_both
+)
 
 # %%
 # Front hub and body heave on both tire models (frequency domain, 2-D road)
-fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4))
-for label, colour in (("ring tire", "tab:red"), ("cross-section tire", "tab:blue")):
-    left.semilogy(f_both, np.sqrt(both[label]["a_hub_FL"]), color=colour, lw=1.0, label=label)
-    right.semilogy(f_both, np.sqrt(both[label]["a_heave"]), color=colour, lw=1.0, label=label)
-left.set_ylabel("front-left hub ASD ((m/s²)/√Hz)")
-right.set_ylabel("heave ASD ((m/s²)/√Hz)")
-for ax in (left, right):
-    ax.set_xlabel("Frequency (Hz)")
-    ax.set_xlim(0, 250)
-    ax.legend()
+fig = ru.figures.whole_car.plot_hub_and_heave(f_both, both, ("tab:red", "tab:blue"), (0.0, 250.0))
 fig.suptitle(f"both tire models under the whole car, {speed_kmh:.0f} km/h, 2-D {texture} road")
 plt.show()
 
@@ -380,12 +368,9 @@ print(f"rigid torus {cavity_frfs.rigid_torus:.1f} Hz; loaded cavity: fore-aft {c
 cavity_tire = ru.experiments.cavity.with_cavity(cavity_test.tire)
 cavity_setup = whole_car.whole_car_setup(test.car, tire=cavity_tire)
 f_chain = np.arange(0.5, 300.0, 0.5)
-chain = {}
-for label, s in (("without the cavity", setup), ("with the cavity", cavity_setup)):
-    chain[label] = full_car.predicted_psd_2d(
-        f_chain, s.tire.fits.responses(f_chain), s.tire.static, test.spectrum, test.speed_kmh / 3.6, s.model,
-        car.wheelbase,
-    )  # fmt: skip
+chain = whole_car.predicted_2d(
+    {"without the cavity": setup, "with the cavity": cavity_setup}, test.spectrum, test.speed_kmh / 3.6, f_chain
+)
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -394,33 +379,23 @@ grid = np.arange(0.0, 251.0)
 print(f"fits: {cavity_setup.tire.fits.n_poles} poles per tassello with the cavity, "
       f"{setup.tire.fits.n_poles} without; G_H {cavity_setup.tire.hub.n_poles} poles")  # fmt: skip
 print(f"RM chain vs direct H_tot, 0-250 Hz: {ru.experiments.cavity.chain_check(cavity_tire, grid):.2e} of its peak")
-band_200 = (f_chain >= 200.0) & (f_chain <= 250.0)
+gains = ru.experiments.cavity.band_gains(f_chain, chain["without the cavity"], chain["with the cavity"], (200.0, 250.0))
 for name in ("a_hub_FL", "a_mount_FL", "a_heave"):
-    off, on = chain["without the cavity"][name], chain["with the cavity"][name]
-    gain = 10 * np.log10(on[band_200].sum() / off[band_200].sum())
-    print(f"{name}: 200-250 Hz band power {gain:+.1f} dB with the cavity, peak at {f_chain[band_200][on[band_200].argmax()]:.1f} Hz")
+    gain, peak = gains.loc[name, "gain (dB)"], gains.loc[name, "peak (Hz)"]
+    print(f"{name}: 200-250 Hz band power {gain:+.1f} dB with the cavity, peak at {peak:.1f} Hz")
 
 # %%
 # Front hub and body heave with and without the cavity (frequency domain)
-fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4))
-for label, colour in (("without the cavity", "0.4"), ("with the cavity", "tab:red")):
-    left.semilogy(f_chain, np.sqrt(chain[label]["a_hub_FL"]), color=colour, lw=1.0, label=label)
-    right.semilogy(f_chain, np.sqrt(chain[label]["a_heave"]), color=colour, lw=1.0, label=label)
-left.set_ylabel("front-left hub ASD ((m/s²)/√Hz)")
-right.set_ylabel("heave ASD ((m/s²)/√Hz)")
-for ax in (left, right):
-    ax.set_xlabel("Frequency (Hz)")
-    ax.set_xlim(100, 300)
-    ax.legend()
+fig = ru.figures.whole_car.plot_hub_and_heave(f_chain, chain, ("0.4", "tab:red"), (100.0, 300.0))
 fig.suptitle(f"the car at {speed_kmh:.0f} km/h on the 2-D {texture} road, its tires' cavity on and off")
 plt.show()
 
 # %% [markdown]
 # Still to come: the cavity on the cross-section tire, its rolling split in the FRFs (above it is
 # the waveguide's alone) and against a published rolling measurement, and the FE stages that
-# step or reduce the tire itself (they refuse a tire with the cavity for now). The ring tire was calibrated against measured modes that
-# already include the air, so with the cavity its first vertical mode drops by ~3 Hz until it
-# is recalibrated.
+# step or reduce the tire itself (they refuse a tire with the cavity for now). The ring tire was
+# calibrated against measured modes that already include the air, so with the cavity its first
+# vertical mode drops by ~3 Hz until it is recalibrated.
 #
 # ## 7. Paper vs ours
 #

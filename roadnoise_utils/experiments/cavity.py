@@ -110,12 +110,26 @@ def with_cavity(tire: str) -> TireSpec:
 def chain_check(tire: TireSpec, freqs: np.ndarray) -> float:
     """Largest difference of the RM chain's fixed-hub :math:`H_{tot}` (the fits summed, Eq. 1-3) from the
     direct one, relative to the direct one's peak over ``freqs`` (Hz): how well the fits carry the cavity."""
-    fits = stages.fit_tasselli(tire)
-    direct = stages.frf_visco(tire).H_tot
-    grid = stages.frf_visco(tire).freqs
-    on = np.isin(grid, freqs)
-    chain = fits.responses(grid[on]).sum(axis=0)
-    return float(np.abs(chain - direct[on]).max() / np.abs(direct[on]).max())
+    fits, direct = stages.fit_tasselli(tire), stages.frf_visco(tire)
+    on = np.isin(direct.freqs, freqs)
+    chain = fits.responses(direct.freqs[on]).sum(axis=0)
+    return float(np.abs(chain - direct.H_tot[on]).max() / np.abs(direct.H_tot[on]).max())
+
+
+def band_gains(
+    freqs: np.ndarray, without: dict[str, np.ndarray], with_cavity: dict[str, np.ndarray], band: tuple[float, float]
+) -> pd.DataFrame:
+    """Per output: the band power with the cavity over without it (dB) and where the cavity's PSD peaks in
+    ``band`` (Hz, closed), from two sets of PSDs on the same ``freqs``."""
+    inside = (freqs >= band[0]) & (freqs <= band[1])
+    rows = {
+        name: {
+            "gain (dB)": 10.0 * np.log10(with_cavity[name][inside].sum() / without[name][inside].sum()),
+            "peak (Hz)": float(freqs[inside][with_cavity[name][inside].argmax()]),
+        }
+        for name in with_cavity
+    }
+    return pd.DataFrame(rows).T
 
 
 def rolling_split(conditions: CavityConditions | None = None) -> pd.DataFrame:

@@ -196,12 +196,31 @@ def wheelbase_check(setup: WholeCarSetup, conditions: WholeCarConditions | None 
     return WheelbaseCheck(run, freqs, predicted, table, speed, car.wheelbase)
 
 
-def _cached_run(setup: WholeCarSetup, spectrum, speed, duration, seed, lateral, resolution, sample_rate) -> WholeCarRun:
-    """:func:`whole_car_run` as a cached stage (notebook 11 and the claims share it)."""
-    from ..repro.cache import cached
+def predicted_2d(
+    setups: dict[str, WholeCarSetup], spectrum: RoadSpectrum, speed: float, freqs: np.ndarray
+) -> dict[str, dict[str, np.ndarray]]:
+    """Each setup's frequency-domain PSD of every output on a 2-D road at ``speed`` m/s
+    (:func:`.vehicle.full_car.predicted_psd_2d`), by the setups' labels."""
+    return {
+        label: full_car.predicted_psd_2d(
+            freqs, s.tire.fits.responses(freqs), s.tire.static, spectrum, speed, s.model, s.car.wheelbase
+        )
+        for label, s in setups.items()
+    }
+
+
+def _fingerprints(setup: WholeCarSetup) -> tuple:
+    """The numerics behind a cached whole-car road run (cache fingerprints)."""
     from ..rm import simulation
     from ..road import input as road_input
     from ..road import textures
+
+    return (two_track, road_input, textures, simulation, *stages.frf_runs(setup.tire.tire))
+
+
+def _cached_run(setup: WholeCarSetup, spectrum, speed, duration, seed, lateral, resolution, sample_rate) -> WholeCarRun:
+    """:func:`whole_car_run` as a cached stage (notebook 11 and the claims share it)."""
+    from ..repro.cache import cached
     from ..vehicle import car_spectra as car_spectra_module
 
     inputs = {
@@ -215,15 +234,7 @@ def _cached_run(setup: WholeCarSetup, spectrum, speed, duration, seed, lateral, 
         "resolution": float(resolution),
         "sample_rate": None if sample_rate is None else float(sample_rate),
     }
-    runs = (
-        full_car,
-        two_track,
-        road_input,
-        textures,
-        simulation,
-        car_spectra_module,
-        *stages.frf_runs(setup.tire.tire),
-    )
+    runs = (full_car, car_spectra_module, *_fingerprints(setup))
     return cached(
         "whole_car_run",
         inputs,
@@ -283,9 +294,6 @@ def predicted_coherence(
 def axle_coherence(setup: WholeCarSetup, conditions: WholeCarConditions | None = None) -> AxleCoherence:
     """The front axle on the coherence run's 3-D road (cached) against the frequency domain, 0-15 Hz."""
     from ..repro.cache import cached
-    from ..rm import simulation
-    from ..road import input as road_input
-    from ..road import textures
 
     test = whole_car_conditions() if conditions is None else conditions
     speed = test.coherence_speed_kmh / 3.6
@@ -301,7 +309,7 @@ def axle_coherence(setup: WholeCarSetup, conditions: WholeCarConditions | None =
         "axle_forces",
         inputs,
         lambda: axle_forces(setup, test.spectrum, speed, test.coherence_duration, test.coherence_seed),
-        runs=(two_track, road_input, textures, simulation, *stages.frf_runs(setup.tire.tire)),
+        runs=_fingerprints(setup),
     )
     f, predicted, road = predicted_coherence(setup, test)
     nperseg = int(round(rate / test.coherence_resolution))

@@ -167,3 +167,23 @@ def plot_cavity_frfs(result) -> plt.Figure:
         ax.set_xlabel("Frequency (Hz)")
     axes[0].legend(fontsize=8)
     return fig
+
+
+def plot_hub_and_heave(
+    freqs: np.ndarray,
+    by_label: dict[str, dict[str, np.ndarray]],
+    colours: tuple[str, ...],
+    f_range: tuple[float, float],
+) -> plt.Figure:
+    """Front-left hub and body heave ASDs of a few predicted cases (e.g. two tire models, cavity off and on)."""
+    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4))
+    for (label, psd), colour in zip(by_label.items(), colours):
+        left.semilogy(freqs, np.sqrt(psd["a_hub_FL"]), color=colour, lw=1.0, label=label)
+        right.semilogy(freqs, np.sqrt(psd["a_heave"]), color=colour, lw=1.0, label=label)
+    left.set_ylabel("front-left hub ASD ((m/s²)/√Hz)")
+    right.set_ylabel("heave ASD ((m/s²)/√Hz)")
+    for ax in (left, right):
+        ax.set_xlabel("Frequency (Hz)")
+        ax.set_xlim(*f_range)
+        ax.legend()
+    return fig

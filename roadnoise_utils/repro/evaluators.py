@@ -238,6 +238,6 @@ EVALUATORS: dict[str, Callable[[str], float]] = {
     "car_notches": lambda m: float(notch_depth(_whole_car(m), 20.0)["largest at a notch / peak"].max()),
     "car_time_vs_frequency": lambda m: float((wheelbase_check(_whole_car(m)).ratios - 1.0).abs().to_numpy().max()),
     "car_coherence": _car_coherence,
-    "cavity_split": lambda m: _cavity_split(m).loc[_cavity_split(m)["load (N)"] == _rated_load(), "split (Hz)"].iloc[0],
+    "cavity_split": lambda m: _cavity_split(m).set_index("load (N)").loc[_rated_load(), "split (Hz)"],
     "cavity_load_exponent": lambda m: load_exponent(_cavity_split(m)),
 }
