@@ -86,7 +86,9 @@ plt.show()
 # NBVAL_CHECK_OUTPUT
 # The body and the geometry
 b = car.body
-print(f"sprung body: {b.mass:.0f} kg, pitch inertia {b.pitch_inertia:.0f} kg m^2, roll inertia {b.roll_inertia:.0f} kg m^2")
+print(
+    f"sprung body: {b.mass:.0f} kg, pitch inertia {b.pitch_inertia:.0f} kg m^2, roll inertia {b.roll_inertia:.0f} kg m^2"
+)
 print(f"wheelbase {car.wheelbase:.2f} m, centre of mass {car.cg_to_front:.2f} m behind the front axle, "
       f"tracks {car.track_front:.2f} / {car.track_rear:.2f} m")  # fmt: skip
 print(f"tracks of the 3-D road: {ru.road.two_track.wheel_tracks(static, car.positions).size}")
@@ -199,7 +201,9 @@ depth = whole_car.notch_depth(setup, 20.0)
 for name, row in depth.iterrows():
     print(f"{name[2:]}: {row['notches']:.0f} notches from {row['first (Hz)']:.2f} Hz, "
           f"largest at a notch / peak < 1e-12: {bool(row['largest at a notch / peak'] < 1e-12)}")  # fmt: skip
-print(f"heavy body (x 1e9) vs the quarter car: largest difference < 1e-7: {whole_car.heavy_body_difference(car) < 1e-7}")
+print(
+    f"heavy body (x 1e9) vs the quarter car: largest difference < 1e-7: {whole_car.heavy_body_difference(car) < 1e-7}"
+)
 
 # %% [markdown]
 # ## 4. Left and right: the coherence of the road forces
@@ -220,7 +224,9 @@ coh = whole_car.axle_coherence(setup, test)
 # %%
 # Coherence of the front axle's left and right road forces
 ax = ru.figures.whole_car.plot_axle_coherence(coh)
-ax.set_title(f"front axle at {test.coherence_speed_kmh:.0f} km/h, {test.coherence_duration:.0f} s of the {texture} texture")
+ax.set_title(
+    f"front axle at {test.coherence_speed_kmh:.0f} km/h, {test.coherence_duration:.0f} s of the {texture} texture"
+)
 plt.show()
 
 # %%
@@ -429,10 +435,14 @@ from ipywidgets import Checkbox, Dropdown, FloatSlider, interact
 
 def show_whole_car(speed_kmh, texture, cavity):
     car_setup = cavity_setup if cavity else setup
-    run = whole_car.whole_car_run(car_setup, ru.textures.load_texture(texture), speed_kmh / 3.6, 4.0, test.seed, lateral=False)
+    run = whole_car.whole_car_run(
+        car_setup, ru.textures.load_texture(texture), speed_kmh / 3.6, 4.0, test.seed, lateral=False
+    )
     psd = run.spectra.psd
     curves = {"front-left hub": psd["a_hub_FL"], "rear-right top mount": psd["a_mount_RR"], "heave": psd["a_heave"]}
-    ru.figures.quarter_car.plot_spectra(run.spectra.freqs, curves, "acceleration ASD ((m/s²)/√Hz)", (0.0, 250.0), log=True)
+    ru.figures.quarter_car.plot_spectra(
+        run.spectra.freqs, curves, "acceleration ASD ((m/s²)/√Hz)", (0.0, 250.0), log=True
+    )
     plt.show()
 
 

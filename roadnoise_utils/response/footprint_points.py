@@ -19,15 +19,22 @@ from ..tire.section_dynamics import lateral_mirror
 from ..tire.section_static import SectionStaticState, SectionTire
 
 
+def contact_rows(c: int, columns: np.ndarray) -> np.ndarray:
+    """The contact DOF of the grid columns ``columns``: their radial, then their tangential DOF (2n,)."""
+    return np.concatenate([columns, c + columns])
+
+
 def blocks_by_sum(receptance: np.ndarray, c: int, columns: np.ndarray) -> np.ndarray:
-    """A harmonic's receptances (b, 2c, 2c) as its blocks in summation order (b, 4, n, c), rows ``columns`` (n,).
+    """A harmonic's receptance rows (b, 2n, 2c) of the grid columns ``columns`` (n,), in the order of
+    :func:`contact_rows`, as its blocks in summation order (b, 4, n, c).
 
     ``rr`` and ``tt`` (summed with ``cos``), then ``-rt`` and ``tr`` (summed with ``sin``), as
     :func:`.tire.section_contact.angular_sums` sums them; only the rows of the grid columns
     ``columns`` (the loaded points' columns the gathers read).
     """
-    out = np.empty((receptance.shape[0], 4, columns.size, c), receptance.dtype)
-    radial, tangential = receptance[:, columns], receptance[:, c + columns]
+    n = columns.size
+    out = np.empty((receptance.shape[0], 4, n, c), receptance.dtype)
+    radial, tangential = receptance[:, :n], receptance[:, n:]
     out[:, 0], out[:, 1] = radial[:, :, :c], tangential[:, :, c:]
     out[:, 2], out[:, 3] = -radial[:, :, c:], tangential[:, :, :c]
     return out

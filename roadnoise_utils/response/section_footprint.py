@@ -45,6 +45,7 @@ from .footprint_points import (
     Projection,
     angular_table,
     blocks_by_sum,
+    contact_rows,
     even_projection,
     gather_table,
     lateral_split,
@@ -375,9 +376,11 @@ class EvenFootprint:
         laws = self.tire.ops.laws if laws is None else laws
         c = self.tire.grid.n_cols
         blocks = np.empty((BLOCK, self.cos.shape[1], 4, columns.size, c), complex)
+        rows = contact_rows(c, columns)
 
         def fill(k: int, block: np.ndarray) -> None:
-            blocks[: block.size, k] = blocks_by_sum(self.harmonics[k].receptance(laws, block, inertia), c, columns)
+            receptance = self.harmonics[k].receptance(laws, block, inertia, rows)
+            blocks[: block.size, k] = blocks_by_sum(receptance, c, columns)
 
         # LAPACK releases the GIL: two harmonics at a time
         with ThreadPoolExecutor(max_workers=2) as workers:

@@ -86,16 +86,21 @@ class _Condensed:
     projected: Projected
     r: np.ndarray
 
-    def receptance(self, laws: dict, omegas: np.ndarray, inertia: bool) -> np.ndarray:
-        """This part's share of :math:`F_n(\\omega)`, (n_omega, d, d): :math:`R^T S^{-1} R` (see :meth:`ReducedHarmonic.receptance`)."""
+    def receptance(self, laws: dict, omegas: np.ndarray, inertia: bool, rows: np.ndarray | None = None) -> np.ndarray:
+        """This part's share of :math:`F_n(\\omega)`, (n_omega, d, d): :math:`R^T S^{-1} R` (see :meth:`ReducedHarmonic.receptance`).
+
+        With ``rows`` only those rows, (n_omega, rows, d): :math:`(S^{-1} R_{rows})^T R`, ``S``
+        being symmetric (fewer right-hand sides and a smaller product).
+        """
         stiffness = self.projected.dynamic_stiffness(laws, omegas, inertia)
         k, rank = stiffness.shape[1], self.r.shape[0]
         condensed = stiffness[:, :rank, :rank]
         if k > rank:
             inner = np.linalg.solve(stiffness[:, rank:, rank:], stiffness[:, rank:, :rank])
             condensed = condensed - np.matmul(stiffness[:, :rank, rank:], inner)
-        x = np.linalg.solve(condensed, np.broadcast_to(self.r.astype(complex), (omegas.size,) + self.r.shape))
-        return np.matmul(self.r.T, x)
+        loads = self.r if rows is None else self.r[:, rows]
+        x = np.linalg.solve(condensed, np.broadcast_to(loads.astype(complex), (omegas.size,) + loads.shape))
+        return np.matmul(np.swapaxes(x, 1, 2), self.r)
 
 
 def _condense(projected: Projected, rotation: np.ndarray) -> _Condensed:
@@ -130,8 +135,11 @@ class ReducedHarmonic:
             return [_condense(self.projected, np.eye(k))]
         return [_condense(self.projected, basis) for _, basis in parity_bases(self.mirror)]
 
-    def receptance(self, laws: dict, omegas: np.ndarray, inertia: bool = True) -> np.ndarray:
-        """:math:`F_n(\\omega)` at the contact DOF (m/N), (n_omega, d, d) complex; quasi-static without ``inertia``.
+    def receptance(
+        self, laws: dict, omegas: np.ndarray, inertia: bool = True, rows: np.ndarray | None = None
+    ) -> np.ndarray:
+        """:math:`F_n(\\omega)` at the contact DOF (m/N), (n_omega, d, d) complex; quasi-static without ``inertia``;
+        with ``rows`` (indices of the contact DOF) only those rows, (n_omega, rows, d).
 
         On a basis rotated so that only its first coordinates move the contact DOF (``C = Q [R; 0]``,
         a QR of the contact values), :math:`F = R^T S^{-1} R` with
@@ -141,7 +149,7 @@ class ReducedHarmonic:
         has no coupling between them), a quarter of the work again.
         """
         omegas = np.asarray(omegas, float)
-        return sum(part.receptance(laws, omegas, inertia) for part in self._condensed)
+        return sum(part.receptance(laws, omegas, inertia, rows) for part in self._condensed)
 
 
 def lateral_mirror(ops: HarmonicOperators) -> tuple[np.ndarray, np.ndarray] | None:
