@@ -38,7 +38,6 @@
 
 # %%
 import matplotlib.pyplot as plt
-import numpy as np
 
 import roadnoise_utils as ru
 
