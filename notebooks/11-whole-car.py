@@ -274,39 +274,52 @@ for label, psd in both.items():
     print(f"{label}: front-left hub {hub:.2f} m/s^2, heave {heave:.3f} m/s^2 RMS")
 
 # %% [markdown]
-# ## 6. The air cavity: first steps
+# ## 6. The air cavity
 #
 # The air between the rim and the belt is a torus. Below its first cross-sectional mode (~1.3
 # kHz) sound runs around it as a plane wave, and the rigid torus of mean radius $R$ resonates at
 # $f_n = n c / (2\pi R)$, each mode a doublet ($\cos n\theta$, $\sin n\theta$). Loaded, the
-# footprint flattens the belt (and the sidewalls bulge, giving about half of it back), the
+# footprint flattens the belt (and the sidewalls bulge, giving part of it back), the
 # section $A(\theta)$ dips at the footprint, and Webster's equation $(A p')' + k^2 A p = 0$
 # splits the doublet: the even mode, whose pressure pushes the rim up and down (*vertical*),
 # rises; the odd one (*fore-aft*) falls (`tire/cavity.py`: periodic linear elements, checked
 # against the closed form and a first-order formula).
+#
+# On the ring tire the section is a rectangle between the rim and the belt, the sidewalls
+# bulging as inextensible arcs. On the tire built from its cross-section it is the mesh's inner
+# surface from bead to bead, closed by the rim (`tire/section_cavity.py`): the area and the
+# centroid's radius from the contour, the loaded area from the normal motion of the whole inner
+# surface in every harmonic of the static solve, the sidewalls' bulge included as the shell
+# computes it (checked against the deformed section measured as a polygon, to 1e-4).
 
 # %%
 # NBVAL_IGNORE_OUTPUT
-# The split against the load on the car's ring tire (data/conditions/whole_car.toml, [cavity])
+# The split against the load on the car's tire, both models (data/conditions/whole_car.toml, [cavity])
 cavity_test = ru.experiments.cavity.cavity_conditions()
-split = ru.experiments.cavity.split_against_load(cavity_test)
+section_cavity_test = ru.experiments.cavity.cavity_conditions(f"{cavity_test.tire}_cross_section")
+splits = {
+    "ring tire": ru.experiments.cavity.split_against_load(cavity_test),
+    "cross-section tire": ru.experiments.cavity.split_against_load(section_cavity_test),
+}
 rated = ru.stages.load_tire(cavity_test.tire).operating.vertical_load
 measured_split = (ru.claims.paper_value("cavity_split", "min"), ru.claims.paper_value("cavity_split", "max"))
 
 # %%
-# The loaded cavity's doublet against the load, with the measured split at rated load
-fig = ru.figures.whole_car.plot_cavity_split(split, measured_split, rated)
+# The loaded cavity's doublet against the load on both tire models, with the measured split at rated load
+fig = ru.figures.whole_car.plot_cavity_split(splits, measured_split, rated)
 fig.suptitle(f"the air cavity of the {cavity_test.tire.replace('_', '/', 1)} under load")
 plt.show()
 
 # %%
 # NBVAL_CHECK_OUTPUT
 # The doublet at each load, and how the split grows with the load
-for _, row in split.iterrows():
-    print(f"{row['load (N)']:5.0f} N ({row['deflection (mm)']:4.1f} mm): fore-aft {row['fore-aft (Hz)']:6.1f} Hz, "
-          f"vertical {row['vertical (Hz)']:6.1f} Hz, split {row['split (Hz)']:4.1f} Hz "
-          f"(first order {row['first-order split (Hz)']:4.1f})")  # fmt: skip
-print(f"split ~ load^{ru.experiments.cavity.load_exponent(split):.2f}")
+for model, split in splits.items():
+    print(f"{model}:")
+    for _, row in split.iterrows():
+        print(f"  {row['load (N)']:5.0f} N ({row['deflection (mm)']:4.1f} mm): fore-aft {row['fore-aft (Hz)']:6.1f} Hz, "
+              f"vertical {row['vertical (Hz)']:6.1f} Hz, split {row['split (Hz)']:4.1f} Hz "
+              f"(first order {row['first-order split (Hz)']:4.1f})")  # fmt: skip
+    print(f"  split ~ load^{ru.experiments.cavity.load_exponent(split):.2f}")
 
 # %% [markdown]
 # Rolling, the air turns with the tire while the flattened section stays under the axle: seen
@@ -324,10 +337,13 @@ for _, row in ru.experiments.cavity.rolling_split(cavity_test).iterrows():
 
 # %% [markdown]
 # At the tire file's load the split lies inside the 2-14 Hz measured on passenger tires (Choi &
-# Bolton, INTER-NOISE 2020 and AIP Advances 2026), the fore-aft mode below the vertical one as
-# measured. It grows in proportion to the load, where the measurements grow nearly
-# quadratically or faster: the ring tire is linear, so the area the footprint takes from the
-# cavity is proportional to the load, while a real footprint lengthens as the tire deflects.
+# Bolton, INTER-NOISE 2020 and AIP Advances 2026) on both tire models, the fore-aft mode below
+# the vertical one as measured; the cross-section tire's is the larger for nearly the same
+# section: its loaded section ovalises more (the first-order formula weighs the area lost at the
+# footprint and gained at the front and back alike). It grows in proportion to the load,
+# where the measurements grow nearly quadratically or faster: both tires are linear, so the
+# area the footprint takes from the cavity is proportional to the load, while a real footprint
+# lengthens as the tire deflects.
 #
 # Coupled with the tire, the waveguide's pressure pushes on the belt and on the rim, and the
 # belt's and the rim's motion pump it (one matrix, by reciprocity). Eliminating the pressure
@@ -397,9 +413,18 @@ fig.suptitle(f"the car at {speed_kmh:.0f} km/h on the 2-D {texture} road, its ti
 plt.show()
 
 # %% [markdown]
-# Still to come: the cavity on the cross-section tire, its rolling split in the FRFs (above it is
-# the waveguide's alone) and against a published rolling measurement, and the FE stages that
-# step or reduce the tire itself (they refuse a tire with the cavity for now). The ring tire was
+# The tire built from its cross-section takes the cavity the same way
+# (`response/section_cavity_frf.py`): the pressure pushes on the whole inner surface and on the
+# rim's base, each harmonic's response to it comes from its reduced basis (the wall's static
+# shapes added to it), and eliminating the even modes' pressures is one low-rank update of the
+# footprint's contact receptance and of its rim transfer, so that its fixed-hub FRFs, fits, $G_H$
+# and car carry the cavity behind the same switch. It costs about as much again as the tire's
+# footprint sweep, so this chapter shows the ring tire's; a test checks the cross-section's against
+# the tire and the air solved as one system (every waveguide node, every harmonic).
+#
+# Still to come: the rolling split in the FRFs (above it is the waveguide's alone) and against
+# a published rolling measurement, and the FE stages that step or reduce the tire itself (they
+# refuse a tire with the cavity for now). The ring tire was
 # calibrated against measured modes that already include the air, so with the cavity its first
 # vertical mode drops by ~3 Hz until it is recalibrated.
 #
@@ -454,4 +479,4 @@ _ = interact(
 )
 
 # %% [markdown]
-# **Next:** the air cavity on the cross-section tire, and rolling in the FRFs.
+# **Next:** the rolling cavity in the FRFs, and the cavity in the stepped and reduced FE stages.

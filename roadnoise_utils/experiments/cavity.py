@@ -1,4 +1,4 @@
-"""The tire's air cavity on the ring tire: its split under load and the fixed-hub FRFs with and without it (notebook 11).
+"""The tire's air cavity: its split under load (both tire models) and the ring tire's fixed-hub FRFs with and without it (notebook 11).
 
 Reads the ``[cavity]`` table of ``data/conditions/whole_car.toml`` once
 (:func:`cavity_conditions`); the numerics are :mod:`roadnoise_utils.tire.cavity` and
@@ -13,9 +13,10 @@ import numpy as np
 import pandas as pd
 
 from .. import guards
-from ..repro import stages
+from ..repro import section_stages, stages
 from ..response.frf import FRFResult, frf_visco
 from ..tire import cavity as cavity_model
+from ..tire import section_cavity
 from ..tire.spec import TireSpec
 from .conditions import load_conditions, resolve
 
@@ -47,15 +48,23 @@ def cavity_conditions(tire: str | None = None) -> CavityConditions:
 
 def split_against_load(conditions: CavityConditions | None = None) -> pd.DataFrame:
     """The loaded cavity's first doublet at each load: fore-aft and vertical frequency (Hz), their split,
-    the first-order formula's split (module notes of :mod:`.tire.cavity`) and the static deflection (mm)."""
+    the first-order formula's split (module notes of :mod:`.tire.cavity`) and the static deflection (mm).
+
+    Either tire model: the ring tire's belt and sidewall arcs (:func:`.tire.cavity.loaded_area`), or
+    the cross-section tire's inner surface (:func:`.tire.section_cavity.loaded_areas`).
+    """
     test = cavity_conditions() if conditions is None else conditions
     spec = stages.load_tire(test.tire)
-    cav = cavity_model.ring_tire_cavity(spec, test.temperature)
+    if stages.is_cross_section(spec):
+        cav = section_cavity.section_cavity(section_stages.section_tire(spec), test.temperature).cavity
+        states, areas = section_stages.cavity_areas(spec, test.loads)
+    else:
+        cav = cavity_model.ring_tire_cavity(spec, test.temperature)
+        states = [stages.solve_static(spec, load=load) for load in test.loads]
+        areas = [cavity_model.loaded_area(cav, static) for static in states]
     f1 = float(cavity_model.rigid_torus_frequencies(cav, 1)[0])
     rows = []
-    for load in test.loads:
-        static = stages.solve_static(spec, load=load)
-        area = cavity_model.loaded_area(cav, static)
+    for load, static, area in zip(test.loads, states, areas):
         fore_aft, vertical = cavity_model.webster_modes(cav, area).split()
         theta = 2.0 * np.pi * np.arange(area.size) / area.size
         ds = 2.0 * np.pi * cav.mean_radius / area.size

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import matplotlib.pyplot as plt
 import numpy as np
+import pandas as pd
 from matplotlib.patches import Rectangle
 
 from ..vehicle.full_car import CORNERS
@@ -131,22 +132,26 @@ def plot_axle_coherence(check) -> plt.Axes:
     return ax
 
 
-def plot_cavity_split(table, measured: tuple[float, float], rated_load: float) -> plt.Figure:
+def plot_cavity_split(tables, measured: tuple[float, float], rated_load: float) -> plt.Figure:
     """The loaded cavity's fore-aft and vertical modes against the load, and their split with the
-    measured range of passenger tires at rated load drawn in."""
+    measured range of passenger tires at rated load drawn in; ``tables`` one
+    :func:`.experiments.cavity.split_against_load` table or several by label (one line style each)."""
+    tables = {"": tables} if isinstance(tables, pd.DataFrame) else dict(tables)
     fig, (left, right) = plt.subplots(1, 2, figsize=(10, 3.8))
-    load = table["load (N)"]
-    left.plot(load, table["vertical (Hz)"], "o-", color="tab:red", label="vertical (even)")
-    left.plot(load, table["fore-aft (Hz)"], "s-", color="tab:blue", label="fore-aft (odd)")
+    for (label, table), style in zip(tables.items(), ("-", "-.", ":")):
+        tag = f", {label}" if label else ""
+        load = table["load (N)"]
+        left.plot(load, table["vertical (Hz)"], "o" + style, color="tab:red", label=f"vertical (even){tag}")
+        left.plot(load, table["fore-aft (Hz)"], "s" + style, color="tab:blue", label=f"fore-aft (odd){tag}")
+        right.plot(load, table["split (Hz)"], "o" + style, color="k", label=f"Webster, loaded section{tag}")
+        right.plot(load, table["first-order split (Hz)"], style, color="0.6", label=f"first-order formula{tag}")
     left.set_ylabel("cavity mode (Hz)")
-    right.plot(load, table["split (Hz)"], "o-", color="k", label="Webster, loaded section")
-    right.plot(load, table["first-order split (Hz)"], "--", color="0.5", label="first-order formula")
     right.errorbar([rated_load], [0.5 * sum(measured)], yerr=[[0.5 * (measured[1] - measured[0])]], fmt="none",
                    ecolor="tab:green", elinewidth=6, alpha=0.5, label="measured at rated load (Choi & Bolton 2020)")  # fmt: skip
     right.set_ylabel("split (Hz)")
     for ax in (left, right):
         ax.set_xlabel("load (N)")
-        ax.legend(fontsize=8)
+        ax.legend(fontsize=7)
     return fig
 
 

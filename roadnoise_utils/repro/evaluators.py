@@ -196,11 +196,17 @@ def _car_coherence(model: str) -> float:
 
 @functools.cache
 def _cavity_split(model: str):
-    return split_against_load(cavity_conditions())  # ring only: the cross-section claims are n/a
+    return split_against_load(cavity_conditions(_cavity_tire(model)))
 
 
-def _rated_load() -> float:
-    return float(stages.load_tire(cavity_conditions().tire).operating.vertical_load)
+def _cavity_tire(model: str) -> str:
+    """The cavity test's tire (``[cavity] tire`` of whole_car.toml, the ring's) in ``model``."""
+    ring = cavity_conditions().tire
+    return ring if model == "ring" else tire_of(model, next(role for role, t in TIRES["ring"].items() if t == ring))
+
+
+def _rated_load(model: str) -> float:
+    return float(stages.load_tire(_cavity_tire(model)).operating.vertical_load)
 
 
 EVALUATORS: dict[str, Callable[[str], float]] = {
@@ -238,6 +244,6 @@ EVALUATORS: dict[str, Callable[[str], float]] = {
     "car_notches": lambda m: float(notch_depth(_whole_car(m), 20.0)["largest at a notch / peak"].max()),
     "car_time_vs_frequency": lambda m: float((wheelbase_check(_whole_car(m)).ratios - 1.0).abs().to_numpy().max()),
     "car_coherence": _car_coherence,
-    "cavity_split": lambda m: _cavity_split(m).set_index("load (N)").loc[_rated_load(), "split (Hz)"],
+    "cavity_split": lambda m: _cavity_split(m).set_index("load (N)").loc[_rated_load(m), "split (Hz)"],
     "cavity_load_exponent": lambda m: load_exponent(_cavity_split(m)),
 }

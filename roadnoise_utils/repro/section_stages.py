@@ -17,6 +17,9 @@ stage                          caches
 :func:`dynamic_cleat_runs`     :func:`roadnoise_utils.response.section_one_sided.section_dynamic_runs`
                                of a cleat on the drum: the one-sided run and its frozen twin,
                                stepped together (:func:`dynamic_cleat` picks one)
+:func:`cavity_areas`           :func:`roadnoise_utils.tire.section_cavity.loaded_areas` on the flat
+                               road at several loads (one compliance and one factorisation per
+                               harmonic for all)
 =============================  ==========================================================================
 
 :func:`section_tire` (mesh, harmonic matrices and inflation: about half a second) is not cached.
@@ -29,6 +32,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..response import section_cavity_frf as cavity_frf
 from ..response import section_footprint as footprint
 from ..response import section_modal as modal
 from ..response import section_one_sided as one_sided
@@ -36,6 +40,7 @@ from ..response.modal_reduction import ModalReduction
 from ..response.one_sided import ContactRun
 from ..response.section_footprint import FootprintFRF
 from ..road.cleat import cleat_profile
+from ..tire import section_cavity as cavity_module
 from ..tire import section_static as static_module
 from ..tire import section_stepping as stepping
 from ..tire import spec
@@ -61,6 +66,15 @@ def load_section_tire(tire: SectionTireLike) -> CrossSectionSpec:
 def section_tire(tire: SectionTireLike) -> SectionTire:
     """The built cross-section tire (fast; not cached)."""
     return build_section_tire(load_section_tire(tire))
+
+
+def _no_cavity(tire: SectionTireLike, stage: str) -> None:
+    """Refuse a cross-section tire with ``[cavity] enabled = true`` in a stage that does not couple it yet."""
+    if load_section_tire(tire).cavity.enabled:
+        raise ValueError(
+            f"{stage}: this stage's numerics do not include the air cavity yet (the footprint FRFs, the fits "
+            "and the RM chain do); valid tires have [cavity] enabled = false"
+        )
 
 
 def _inputs(tire: SectionTireLike, road: str, load: float | None, drum_radius: float | None) -> dict:
@@ -103,7 +117,8 @@ def section_footprint(
         f_max = float(freqs.max())
         reductions = footprint_reductions(tire, f_max, footprint.CUTOFF_FACTOR * f_max)
         built = build_section_tire(inputs["tire"])
-        return footprint.footprint_frf(built, state, freqs, progress=progress, reductions=reductions)
+        cavity = cavity_frf.section_cavity_coupling(built, state) if inputs["tire"].cavity.enabled else None
+        return footprint.footprint_frf(built, state, freqs, progress=progress, reductions=reductions, cavity=cavity)
 
     return cached(section_footprint, {**inputs, "freqs": freqs}, compute, runs=(footprint.footprint_frf,))
 
@@ -115,7 +130,9 @@ def footprint_reductions(tire: SectionTireLike, f_max: float, cutoff: float) -> 
     inputs = {"tire": load_section_tire(tire), "f_max": float(f_max), "cutoff": float(cutoff)}
 
     def compute() -> footprint.FootprintReductions:
-        return footprint.footprint_reductions(build_section_tire(inputs["tire"]), inputs["f_max"], inputs["cutoff"])
+        built = build_section_tire(inputs["tire"])
+        wall = cavity_module.wall_volume(built) if inputs["tire"].cavity.enabled else None  # the air's load
+        return footprint.footprint_reductions(built, inputs["f_max"], inputs["cutoff"], wall)
 
     return cached(footprint_reductions, inputs, compute, runs=(footprint.footprint_reductions,))
 
@@ -142,6 +159,7 @@ def section_modal(
     f_band: float = 250.0,
 ) -> ModalReduction:
     """Cached :func:`.response.section_modal.section_modal_reduction` on the default direct sweep."""
+    _no_cavity(tire, "section_modal")
     inputs = _inputs(tire, road, load, drum_radius)
     options = {"frozen": frozen, "damping": damping, "reference_frequency": reference_frequency, "f_band": f_band}
     state = section_static(tire, road, load, drum_radius)
@@ -216,6 +234,7 @@ def quasi_static_cleat(
 
 def harmonic_reductions(tire: SectionTireLike, f_max: float = 400.0) -> list:
     """Cached :func:`.tire.section_stepping.reduce_all`: every harmonic's Ritz basis for the time-stepped runs."""
+    _no_cavity(tire, "harmonic_reductions")
     inputs = {"tire": load_section_tire(tire), "f_max": float(f_max)}
 
     def compute() -> list:
@@ -281,3 +300,16 @@ def dynamic_cleat_runs(
 
     runs = (one_sided.section_dynamic_runs, stepping, static_module.solve_section_static)
     return cached(dynamic_cleat_runs, {**inputs, **options}, compute, runs=runs)
+
+
+def cavity_areas(tire: SectionTireLike, loads: tuple[float, ...]) -> tuple[list[SectionStaticState], np.ndarray]:
+    """Cached loaded states on the flat road at ``loads`` (N) and the cavity's Webster area of each
+    (:func:`.tire.section_cavity.loaded_areas`, (n_loads, 720) m^2): the split against the load."""
+    inputs = {"tire": load_section_tire(tire), "loads": tuple(float(v) for v in loads)}
+
+    def compute() -> tuple[list[SectionStaticState], np.ndarray]:
+        built = build_section_tire(inputs["tire"])
+        states = static_module.solve_section_statics(built, "flat", inputs["loads"])
+        return states, cavity_module.loaded_areas(built, states)
+
+    return cached(cavity_areas, inputs, compute, runs=(cavity_module.loaded_areas, static_module.solve_section_statics))

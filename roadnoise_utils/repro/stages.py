@@ -187,7 +187,7 @@ def _cavity_coupling(spec: TireSpec, fet: FETModel, state: StaticState) -> cavit
 
 
 def has_cavity(tire: Tire) -> bool:
-    """Whether the tire file couples its air cavity (``[cavity] enabled``; cross-section tires: not yet)."""
+    """Whether the tire file couples its air cavity (``[cavity] enabled``), on either tire model."""
     return bool(getattr(load_tire(tire), "cavity", NO_CAVITY).enabled)
 
 
@@ -239,9 +239,9 @@ def modal_reduction(
     """
     tire = load_tire(tire)  # the file read once
     options = {"frozen": frozen, "damping": damping, "reference_frequency": reference_frequency, "f_band": f_band}
+    _no_cavity(tire, "modal_reduction")
     if is_cross_section(tire):
         return section_stages.section_modal(tire, road, load=load, drum_radius=drum_radius, **options)
-    _no_cavity(tire, "modal_reduction")
     inputs = _loaded(tire, road, load, drum_radius)
     state = solve_static(tire, road, load, drum_radius)
     visco = frf_visco(tire, road, load=load, drum_radius=drum_radius)

@@ -15,7 +15,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..tire.section_dynamics import lateral_mirror
+from ..tire.section_contact import angular_sums
+from ..tire.section_dynamics import direct_receptance, lateral_mirror
 from ..tire.section_static import SectionStaticState, SectionTire
 
 
@@ -98,20 +99,23 @@ class LateralSplit:
     projection: Projection
 
     def solve(self, comp_rows: np.ndarray, load: np.ndarray) -> np.ndarray:
-        """``y`` (b, R) with ``comp y = load`` (b, R) from ``comp_rows = comp[:, rows]`` (b, R_L, R)."""
+        """``y`` (b, R) with ``comp y = load`` (b, R) from ``comp_rows = comp[:, rows]`` (b, R_L, R);
+        a load (b, R, k) gives k solutions (b, R, k) from the same factorisations."""
+        single = load.ndim == 2
+        load = load[..., None] if single else load
         rows, partner = self.rows, self.partner
         pairs = partner != rows
         direct, image = comp_rows[:, :, rows], comp_rows[:, :, partner]
         even_load, odd_load = 0.5 * (load[:, rows] + load[:, partner]), 0.5 * (load[:, rows] - load[:, partner])
-        symmetric = np.linalg.solve(direct + image * pairs[None, None, :], even_load[..., None])[..., 0]
+        symmetric = np.linalg.solve(direct + image * pairs[None, None, :], even_load)
         y = np.empty(load.shape, complex)
         y[:, rows], y[:, partner] = symmetric, symmetric
         if pairs.any():
             antisymmetric = (direct - image)[:, pairs][:, :, pairs]
-            odd = np.linalg.solve(antisymmetric, odd_load[:, pairs, None])[..., 0]
+            odd = np.linalg.solve(antisymmetric, odd_load[:, pairs])
             y[:, rows[pairs]] += odd
             y[:, partner[pairs]] -= odd
-        return y
+        return y[..., 0] if single else y
 
 
 def even_projection(static: SectionStaticState, keep, partner, rows: np.ndarray, first=None) -> Projection:
@@ -188,3 +192,25 @@ class Projection:
         comp = self.block(table, self.direct, self.weights[0])
         comp[:, paired] += self.block(table, self.mirrored, self.weights[1])
         return comp
+
+
+def contact_receptance(tire: SectionTire, static: SectionStaticState, frequency: float) -> np.ndarray:
+    """Vertical receptance between the contact points at one frequency (m/N), (P, P) complex.
+
+    Every harmonic solved directly (no reduction, no interpolation): the reference of
+    :func:`footprint_frf` and the input of a contact model of the user's own. Points in the
+    order of ``static.points``; a vertical force at point ``b`` moves point ``a`` by ``C[a, b]``.
+    """
+    grid, ops = tire.grid, tire.ops
+    omega = 2 * np.pi * float(frequency)
+    flex = np.stack([direct_receptance(ops, grid.dofs, n, omega) for n in range(tire.harmonics + 1)])
+    col, row = static.points
+    offsets = grid.dtheta * np.arange(-(grid.n_rows - 1), grid.n_rows)
+    sums = angular_sums(flex, offsets, grid.dtheta)
+    th = grid.theta[row]
+    offset_index = row[:, None] - row[None, :] + grid.n_rows - 1
+    projection = Projection((col, th), (col, th), (col, th), offset_index, offset_index, grid.n_cols)
+    c = grid.n_cols
+    blocks = np.stack([sums[:, :c, :c], sums[:, c:, c:], sums[:, :c, c:], sums[:, c:, :c]], axis=1)
+    table = gather_table(blocks.view(float).reshape(blocks.shape + (2,)))
+    return projection.block(table, projection.direct, projection.weights[0])

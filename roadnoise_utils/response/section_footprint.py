@@ -36,21 +36,22 @@ from threadpoolctl import threadpool_limits
 
 from .. import guards
 from ..tire import cross_section
-from ..tire.section_contact import angular_sums, patch_factor
-from ..tire.section_dynamics import direct_receptance, harmonic_modes, lateral_mirror, reduce_harmonic, rim_transfer
+from ..tire.section_contact import patch_factor
+from ..tire.section_dynamics import harmonic_modes, lateral_mirror, reduce_harmonic, rim_transfer
 from ..tire.section_static import SectionStaticState, SectionTire
 from ..tire.tasselli import Tasselli
-from .footprint_points import (
+from .footprint_points import (  # noqa: F401 (contact_receptance: the reference, kept importable from here)
     LateralSplit,
     Projection,
     angular_table,
     blocks_by_sum,
+    contact_receptance,
     contact_rows,
     even_projection,
-    gather_table,
     lateral_split,
 )
 from .frf import FRFResult
+from .section_cavity_frf import SectionCavityCoupling, cavity_terms, effective_rim, woodbury_solve
 
 #: Harmonics with a mode below ``CUTOFF_FACTOR * f_max`` are reduced with those modes (:func:`footprint_frf`).
 CUTOFF_FACTOR = 2.5
@@ -132,28 +133,6 @@ class FootprintFRF:
         return -(self.free_rim + np.einsum("fp,fp->f", self.transfer, self.hub))
 
 
-def contact_receptance(tire: SectionTire, static: SectionStaticState, frequency: float) -> np.ndarray:
-    """Vertical receptance between the contact points at one frequency (m/N), (P, P) complex.
-
-    Every harmonic solved directly (no reduction, no interpolation): the reference of
-    :func:`footprint_frf` and the input of a contact model of the user's own. Points in the
-    order of ``static.points``; a vertical force at point ``b`` moves point ``a`` by ``C[a, b]``.
-    """
-    grid, ops = tire.grid, tire.ops
-    omega = 2 * np.pi * float(frequency)
-    flex = np.stack([direct_receptance(ops, grid.dofs, n, omega) for n in range(tire.harmonics + 1)])
-    col, row = static.points
-    offsets = grid.dtheta * np.arange(-(grid.n_rows - 1), grid.n_rows)
-    sums = angular_sums(flex, offsets, grid.dtheta)
-    th = grid.theta[row]
-    offset_index = row[:, None] - row[None, :] + grid.n_rows - 1
-    projection = Projection((col, th), (col, th), (col, th), offset_index, offset_index, grid.n_cols)
-    c = grid.n_cols
-    blocks = np.stack([sums[:, :c, :c], sums[:, c:, c:], sums[:, :c, c:], sums[:, c:, :c]], axis=1)
-    table = gather_table(blocks.view(float).reshape(blocks.shape + (2,)))
-    return projection.block(table, projection.direct, projection.weights[0])
-
-
 def dynamic_harmonics(tire: SectionTire, f_max: float, cutoff: float) -> int:
     """The last harmonic with a mode below ``cutoff`` (Hz), searching upwards from ``n = 2``."""
     omega = np.pi * f_max
@@ -183,7 +162,7 @@ def _check_inputs(tire: SectionTire, static: SectionStaticState, freqs) -> np.nd
     return freqs
 
 
-def _dynamic_reductions(tire: SectionTire, f_max: float, cutoff: float) -> list:
+def _dynamic_reductions(tire: SectionTire, f_max: float, cutoff: float, wall: np.ndarray | None = None) -> list:
     """Reduced harmonics 0, 1, 2, ... with their modes, up to the first (n >= 2) with no mode below ``cutoff``.
 
     Each records the tire's left-right symmetry (:func:`.tire.section_dynamics.lateral_mirror`),
@@ -191,7 +170,7 @@ def _dynamic_reductions(tire: SectionTire, f_max: float, cutoff: float) -> list:
     """
     reduced, mirror = [], lateral_mirror(tire.ops)
     for n in range(tire.harmonics + 1):
-        red = reduce_harmonic(tire.ops, tire.grid.dofs, n, f_max, cutoff, mirror=mirror)
+        red = reduce_harmonic(tire.ops, tire.grid.dofs, n, f_max, cutoff, mirror=mirror, wall=wall)
         reduced.append(red)
         if n >= 2 and red.n_modes == 0:
             break
@@ -228,10 +207,13 @@ class FootprintReductions:
     high: list
 
 
-def footprint_reductions(tire: SectionTire, f_max: float, cutoff: float) -> FootprintReductions:
-    """Reduce every harmonic for ``0..f_max`` Hz, modes below ``cutoff`` Hz (see the module notes)."""
+def footprint_reductions(
+    tire: SectionTire, f_max: float, cutoff: float, wall: np.ndarray | None = None
+) -> FootprintReductions:
+    """Reduce every harmonic for ``0..f_max`` Hz, modes below ``cutoff`` Hz (see the module notes); with
+    the cavity wall's load ``wall`` (:func:`.tire.section_cavity.wall_volume`) in the dynamic harmonics' bases."""
     with threadpool_limits(1):
-        dynamic = _dynamic_reductions(tire, f_max, cutoff)
+        dynamic = _dynamic_reductions(tire, f_max, cutoff, wall)
         n_high, basis, high = _high_harmonics(tire, len(dynamic) - 1, f_max)
     return FootprintReductions(float(f_max), float(cutoff), dynamic, n_high, basis, high)
 
@@ -403,18 +385,31 @@ class EvenFootprint:
             yield part, np.stack([self.projection.even(table, paired) for table in tables])
 
     def footprint(
-        self, freqs: np.ndarray, laws: dict | None = None, inertia: bool = True, progress: bool = False
+        self,
+        freqs: np.ndarray,
+        laws: dict | None = None,
+        inertia: bool = True,
+        progress: bool = False,
+        cavity: SectionCavityCoupling | None = None,
     ) -> FootprintFRF:
-        """The :class:`FootprintFRF` at ``freqs`` (Hz) with these reductions (``laws``: see :meth:`receptances`)."""
+        """The :class:`FootprintFRF` at ``freqs`` (Hz) with these reductions (``laws``: see :meth:`receptances`);
+        with the loaded air ``cavity`` (:mod:`.section_cavity_frf`; the tire's own laws, with inertia)."""
         tire, static = self.tire, self.static
         freqs = np.asarray(freqs, float)
+        if cavity is not None and (laws is not None or not inertia):
+            raise ValueError("cavity: the air cavity is coupled with the tire's own laws and inertia only")
         with threadpool_limits(1):
             rim = rim_transfer(tire.ops, tire.grid.dofs, 2 * np.pi * freqs, inertia, laws)
+            terms = None if cavity is None else cavity_terms(tire, static, cavity, 2 * np.pi * freqs, self.harmonics)
         col, row = static.points
         th = tire.grid.theta[row]
         c = tire.grid.n_cols
         spread = np.sinc(tire.grid.dtheta / (2 * np.pi))
         transfer = (-(np.cos(th) ** 2) * rim.contact[:, col] + np.sin(th) ** 2 * rim.contact[:, c + col]) * spread
+        free_rim = rim.free_rim
+        if terms is not None:
+            coupled = terms.coupled()
+            transfer, free_rim = effective_rim(transfer, free_rim, terms, coupled)
         hub = np.empty((freqs.size, col.size), complex)
         lateral, paired = self.lateral, self.partner >= 0
         blocks = self._blocks(2 * np.pi * freqs, laws, inertia, lateral.columns)
@@ -424,9 +419,16 @@ class EvenFootprint:
             blocks = tqdm(blocks, total=-(-freqs.size // BLOCK), desc="footprint FRF")
         for part, tables in blocks:
             comp_rows = np.stack([lateral.projection.even(table, paired) for table in tables])
-            hub[part] = lateral.solve(comp_rows, transfer[part][:, self.keep])[:, self.representative]
+            load = transfer[part][:, self.keep]
+            if terms is None:
+                y = lateral.solve(comp_rows, load)
+            else:
+                solve = lambda rhs, rows=comp_rows: lateral.solve(rows, rhs)  # noqa: E731
+                points = terms.points[part][:, self.keep]
+                y = woodbury_solve(solve, load, points, coupled[part], self.pair_weight)
+            hub[part] = y[:, self.representative]
         return FootprintFRF(
-            freqs=freqs, hub=hub, transfer=transfer, free_rim=rim.free_rim, static=static, n_dynamic=self.n_dynamic
+            freqs=freqs, hub=hub, transfer=transfer, free_rim=free_rim, static=static, n_dynamic=self.n_dynamic
         )
 
 
@@ -438,6 +440,7 @@ def footprint_frf(
     progress: bool = False,
     inertia: bool = True,
     reductions: FootprintReductions | None = None,
+    cavity: SectionCavityCoupling | None = None,
 ) -> FootprintFRF:
     """The footprint's hub-force transfer of a loaded cross-section tire (see the module notes).
 
@@ -458,12 +461,15 @@ def footprint_frf(
     reductions : FootprintReductions, optional
         The tire's :func:`footprint_reductions` for ``max(freqs)`` and the cutoff, if computed
         before (e.g. cached: they do not depend on the loaded state).
+    cavity : SectionCavityCoupling, optional
+        The loaded air cavity (:func:`.section_cavity_frf.section_cavity_coupling` of this
+        static state), coupled into the FRFs (beyond the paper); None: the paper's model.
     """
     freqs = _check_inputs(tire, static, freqs)
     _mirror_pairs(static)  # before any work: the set must be symmetric
     f_max = float(freqs.max())
     even = EvenFootprint.build(tire, static, f_max, cutoff_factor * f_max, reductions)
-    return even.footprint(freqs, inertia=inertia, progress=progress)
+    return even.footprint(freqs, inertia=inertia, progress=progress, cavity=cavity)
 
 
 def _high_harmonics(tire: SectionTire, n_dyn: int, f_max: float) -> tuple:

@@ -38,8 +38,10 @@ belt. :func:`ring_cavity_coupling` couples the modes with the ring tire: the bel
 motion and the rim's change the cavity's volume, the pressure pushes on both (one matrix, by
 reciprocity), and eliminating the pressure leaves a low-rank, frequency-dependent term in the
 tire's dynamic stiffness that the fixed-hub FRFs take in (:func:`.response.frf.frf_visco`,
-``cavity=``). Not yet: the cavity in the modal reduction and the fits, a tire-file switch, the
-cross-section tire, the effect of rolling speed.
+``cavity=``), and through them the fits, G_H and the RM chain when the tire file's
+``[cavity] enabled`` is on. :func:`rolling_modes` gives the doublet of the rolling tire. The
+cross-section tire's cavity is :mod:`.section_cavity` (its loaded split; not yet its FRFs). Not
+yet: the cavity in the FE stages that step or reduce the tire, rolling in the FRFs.
 
 **Limits found so far (a review of the physics, issue 15):**
 
@@ -269,15 +271,24 @@ class CavityCoupling:
     area: np.ndarray
 
     def gains(self, omega: float) -> np.ndarray:
-        """:math:`c_m(\\omega) = \\rho c^2 \\omega^2 / (\\omega_m^2 (1 + 2 i \\zeta) - \\omega^2)` (Pa/m^3 in
-        modal units); the uniform mode's is :math:`-\\rho c^2` (the air's compressibility)."""
-        rc2 = self.density * self.sound_speed**2
-        out = np.empty(self.omegas.size, complex)
-        rigid = self.omegas == 0.0
-        out[rigid] = -rc2
-        w2 = self.omegas[~rigid] ** 2 * (1.0 + 2j * self.damping_ratio)
-        out[~rigid] = rc2 * omega**2 / (w2 - omega**2)
-        return out
+        """:func:`modal_gains` of these modes at ``omega`` (rad/s)."""
+        return modal_gains(self.omegas, omega, self.density, self.sound_speed, self.damping_ratio)
+
+
+def modal_gains(
+    omegas: np.ndarray, omega: float, density: float, sound_speed: float, damping_ratio: float
+) -> np.ndarray:
+    """:math:`c_m(\\omega) = \\rho c^2 \\omega^2 / (\\omega_m^2 (1 + 2 i \\zeta) - \\omega^2)` (Pa/m^3 in
+    modal units) of modes at ``omegas`` (rad/s); the uniform mode's (``omegas == 0``) is
+    :math:`-\\rho c^2` (the air's compressibility). The modes are normalised by the waveguide's mass."""
+    rc2 = density * sound_speed**2
+    omegas = np.asarray(omegas, float)
+    out = np.empty(omegas.size, complex)
+    rigid = omegas == 0.0
+    out[rigid] = -rc2
+    w2 = omegas[~rigid] ** 2 * (1.0 + 2j * damping_ratio)
+    out[~rigid] = rc2 * omega**2 / (w2 - omega**2)
+    return out
 
 
 def ring_cavity_coupling(

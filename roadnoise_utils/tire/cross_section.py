@@ -26,7 +26,17 @@ from typing import Any
 import numpy as np
 
 from . import laminate
-from .spec import Compound, Operating, Tassellation, build_section, check_model, param, set_parameter
+from .spec import (
+    NO_CAVITY,
+    AirCavity,
+    Compound,
+    Operating,
+    Tassellation,
+    build_section,
+    check_model,
+    param,
+    set_parameter,
+)
 
 
 @dataclass(frozen=True)
@@ -149,6 +159,7 @@ class CrossSectionSpec:
     tasselli: Tassellation
     compounds: dict[str, Compound]
     pneumatic: str = "none"
+    cavity: AirCavity = NO_CAVITY
     source: str = field(default="", metadata={"identity": False})
 
     model = "cross-section"
@@ -188,6 +199,7 @@ def to_dict(spec: CrossSectionSpec) -> dict[str, Any]:
         out["layers"][name] = {"kind": kind, **dataclasses.asdict(layer)}
     out["construction"] = {k: list(v) for k, v in spec.construction.items()}
     out["pneumatic"] = {"compound": spec.pneumatic}
+    out["cavity"] = dataclasses.asdict(spec.cavity)
     out["compounds"] = {k: dataclasses.asdict(v) for k, v in sorted(spec.compounds.items())}
     return out
 
@@ -223,6 +235,7 @@ def from_dict(data: dict[str, Any], source: str = "<dict>") -> CrossSectionSpec:
     """Validate nested data (the TOML layout) and build a :class:`CrossSectionSpec`."""
     expected = {"tire", "compounds", "layers", "construction", "pneumatic", *SECTIONS}
     missing = sorted(expected - set(data))
+    expected.add("cavity")  # optional: absent, the cavity is off (the paper's model)
     if missing:
         raise ValueError(f"{source}: missing section(s) {['[' + m + ']' for m in missing]}")
     unknown = sorted(set(data) - expected)
@@ -251,6 +264,7 @@ def from_dict(data: dict[str, Any], source: str = "<dict>") -> CrossSectionSpec:
         construction=construction,
         compounds=compounds,
         pneumatic=pneumatic,
+        cavity=build_section(AirCavity, data["cavity"], "cavity", source) if "cavity" in data else NO_CAVITY,
         source=source,
         **sections,
     )

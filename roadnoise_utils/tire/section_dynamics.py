@@ -44,6 +44,7 @@ class Projected:
     mass: np.ndarray
     contact: np.ndarray  # (k, d): basis values at the contact DOF
     momentum: np.ndarray  # (k,): vertical momentum per unit coordinate (kg), zero unless n = 1
+    wall: np.ndarray | None = None  # (k,): the cavity wall's load (section_cavity.wall_volume), if in the basis
 
     @cached_property
     def _stacked(self) -> np.ndarray:
@@ -63,8 +64,9 @@ class Projected:
     def rotated(self, basis: np.ndarray) -> Projected:
         """The same matrices on the orthonormal coordinates ``basis`` (k, k_new) of this basis."""
         compounds = {name: basis.T @ m @ basis for name, m in self.compounds.items()}
+        wall = None if self.wall is None else basis.T @ self.wall
         return Projected(compounds, basis.T @ self.gas @ basis, basis.T @ self.mass @ basis,
-                         basis.T @ self.contact, basis.T @ self.momentum)  # fmt: skip
+                         basis.T @ self.contact, basis.T @ self.momentum, wall)  # fmt: skip
 
 
 def parity_bases(mirror: np.ndarray) -> list[tuple[int, np.ndarray]]:
@@ -151,6 +153,26 @@ class ReducedHarmonic:
         omegas = np.asarray(omegas, float)
         return sum(part.receptance(laws, omegas, inertia, rows) for part in self._condensed)
 
+    def wall_response(self, laws: dict, omegas: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The response to the cavity wall's load ``g`` (reduced with its static shapes, :func:`reduce_harmonic`
+        with ``wall``): the contact DOF's displacement (n_omega, d) and :math:`g^T D_n^{-1} g` (n_omega,)."""
+        if self.projected.wall is None:
+            raise ValueError(
+                f"harmonic {self.n} was reduced without the cavity wall's load (reduce_harmonic(wall=...))"
+            )
+        omegas = np.asarray(omegas, float)
+        contact, volume = 0.0, 0.0
+        for part in self._condensed:
+            p = part.projected
+            z = np.linalg.solve(
+                p.dynamic_stiffness(laws, omegas),
+                np.broadcast_to(p.wall.astype(complex)[:, None], (omegas.size, p.wall.size, 1)),
+            )
+            z = z[..., 0]
+            contact = contact + z @ p.contact
+            volume = volume + z @ p.wall
+        return contact, volume
+
 
 def lateral_mirror(ops: HarmonicOperators) -> tuple[np.ndarray, np.ndarray] | None:
     """The left-right mirror (y -> -y) of the cross-section as a signed permutation of the DOF, or None.
@@ -197,7 +219,9 @@ def _free_positions(ops: HarmonicOperators, dofs: np.ndarray) -> np.ndarray:
     return position
 
 
-def _project(ops: HarmonicOperators, n: int, basis: np.ndarray, position: np.ndarray) -> Projected:
+def _project(
+    ops: HarmonicOperators, n: int, basis: np.ndarray, position: np.ndarray, wall: np.ndarray | None = None
+) -> Projected:
     free = ops.free
     w = harmonic_weight(n)
     compounds = {name: basis.T @ ((w * ops.free_compound(name, n)) @ basis) for name in ops.scaled}
@@ -205,7 +229,8 @@ def _project(ops: HarmonicOperators, n: int, basis: np.ndarray, position: np.nda
     mass_ff = ops.free_mass(n)
     mass = basis.T @ (mass_ff @ basis)
     momentum = basis.T @ (mass_ff @ rigid_vertical(ops)[free]) if n == 1 else np.zeros(basis.shape[1])
-    return Projected(compounds=compounds, gas=gas, mass=mass, contact=basis[position].T, momentum=momentum)
+    wall = None if wall is None else basis.T @ wall[free]
+    return Projected(compounds=compounds, gas=gas, mass=mass, contact=basis[position].T, momentum=momentum, wall=wall)
 
 
 def harmonic_modes(ops: HarmonicOperators, n: int, omega: float, cutoff: float, max_modes: int = 40) -> np.ndarray:
@@ -231,17 +256,22 @@ def reduce_harmonic(
     cutoff: float | None,
     both_ends: bool = True,
     mirror: tuple[np.ndarray, np.ndarray] | None = None,
+    wall: np.ndarray | None = None,
 ) -> ReducedHarmonic:
     """Reduce harmonic ``n`` for the contact DOF ``dofs`` (see the module notes).
 
     ``cutoff`` (Hz) bounds the modes added to the basis; ``None`` for a quasi-static harmonic.
     ``both_ends=False`` keeps only the static shapes at 0 Hz (half the basis of a quasi-static harmonic).
     ``mirror`` (:func:`lateral_mirror`) records the left-right symmetry when the basis has it.
+    ``wall`` (n_dof,): a load whose static shapes join the basis and whose projection is kept (the air
+    cavity's, :func:`.section_cavity.wall_volume`; :meth:`ReducedHarmonic.wall_response`).
     """
     free = ops.free
     position = _free_positions(ops, dofs)
-    rhs = np.zeros((free.size, dofs.size))
+    rhs = np.zeros((free.size, dofs.size + (wall is not None)))
     rhs[position, np.arange(dofs.size)] = 1.0
+    if wall is not None:
+        rhs[:, -1] = wall[free] / np.abs(wall[free]).max()
     w_max = 2 * np.pi * f_max
     vectors = [
         spla.splu(ops.free_stiffness(n, w, storage_only=True)).solve(rhs)
@@ -253,7 +283,7 @@ def reduce_harmonic(
         n_modes = phi.shape[1]
         vectors.append(phi)
     basis = _orthonormal(np.concatenate(vectors, axis=1))
-    projected = _project(ops, n, basis, position)
+    projected = _project(ops, n, basis, position, wall)
     in_basis = None if mirror is None else _mirror_in_basis(projected, basis, free, mirror, ops.n_dof)
     return ReducedHarmonic(n=n, projected=projected, n_modes=n_modes, mirror=in_basis)
 

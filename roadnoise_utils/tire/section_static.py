@@ -155,66 +155,93 @@ def solve_section_static(
     tire: SectionTire, road: str = "flat", load: float | None = None, drum_radius: float | None = None
 ) -> SectionStaticState:
     """Load the cross-section tire against a flat road or a drum (see the module notes)."""
+    return solve_section_statics(tire, road, [load], drum_radius)[0]
+
+
+def solve_section_statics(
+    tire: SectionTire, road: str = "flat", loads=(None,), drum_radius: float | None = None
+) -> list[SectionStaticState]:
+    """:func:`solve_section_static` at several ``loads`` (N; ``None``: the tire file's), one compliance for all."""
     surface = make_road(road, drum_radius)
-    load = tire.spec.operating.vertical_load if load is None else check_load(load)
+    loads = [tire.spec.operating.vertical_load if load is None else check_load(load) for load in loads]
     grid = tire.grid
     check_contact_memory(grid, tire.harmonics)
     flex = harmonic_flexibility(tire.ops, grid.dofs, tire.harmonics)
     compliance = vertical_compliance(grid, flex)
     gap0 = _candidates(grid, surface)
-    forces, delta, k_tan, iterations = active_set(lambda cols: compliance[:, cols], gap0, np.zeros(gap0.size), load)
-    forces = forces.reshape(grid.n_cols, grid.n_rows)
-    contact = forces > 0
-    if contact[:, [0, -1]].any():
-        raise RuntimeError(
-            "contact reaches the end of the contact grid; the load is too high for this tire "
-            f"(grid +/- {grid.theta[-1] * grid.radius.max() * 1e3:.0f} mm)"
+    states = []
+    for load in loads:
+        forces, delta, k_tan, iterations = active_set(lambda cols: compliance[:, cols], gap0, np.zeros(gap0.size), load)
+        forces = forces.reshape(grid.n_cols, grid.n_rows)
+        contact = forces > 0
+        if contact[:, [0, -1]].any():
+            raise RuntimeError(
+                f"contact reaches the end of the contact grid at {load:g} N; the load is too high for this tire "
+                f"(grid +/- {grid.theta[-1] * grid.radius.max() * 1e3:.0f} mm)"
+            )
+        states.append(
+            SectionStaticState(
+                road=surface,
+                load=load,
+                deflection=float(delta),
+                contact=contact,
+                contact_force=forces,
+                pressure=forces / grid.area(),
+                hub_force=_rim_force(tire, forces),
+                vertical_stiffness=float(k_tan),
+                tasselli=section_tasselli(tire, contact),
+                iterations=iterations,
+                grid=grid,
+                tire=tire.spec,
+            )
         )
-    return SectionStaticState(
-        road=surface,
-        load=load,
-        deflection=float(delta),
-        contact=contact,
-        contact_force=forces,
-        pressure=forces / grid.area(),
-        hub_force=_rim_force(tire, forces),
-        vertical_stiffness=float(k_tan),
-        tasselli=section_tasselli(tire, contact),
-        iterations=iterations,
-        grid=grid,
-        tire=tire.spec,
-    )
+    return states
+
+
+def loaded_amplitudes(tire: SectionTire, states: SectionStaticState | list[SectionStaticState]):
+    """Per harmonic, the loaded tire's static amplitudes under the contact forces: yields
+    ``(n, symmetric, antisymmetric)``, each (n_dof, n_states) in m (one sparse factorisation with
+    the static moduli per harmonic for all the states; a single state gives (n_dof, 1)).
+
+    The symmetric set is ``u_r = a_r cos n theta, u_theta = a_theta sin n theta, u_y = a_y cos n theta``,
+    the antisymmetric one ``(sin, -cos, sin)`` (:mod:`.waveguide`).
+    """
+    import scipy.sparse.linalg as spla
+
+    states = [states] if isinstance(states, SectionStaticState) else list(states)
+    grid, ops = tire.grid, tire.ops
+    free = ops.free
+    points = []
+    for state in states:
+        col, row = np.nonzero(state.contact)
+        force = state.contact_force[col, row]
+        th_b = grid.theta[row]
+        points.append((grid.nodes[col], th_b, -force * np.cos(th_b), force * np.sin(th_b)))
+    k = len(states)
+    for n in range(tire.harmonics + 1):
+        spread = np.sinc(n * grid.dtheta / (2 * np.pi))
+        loads = np.zeros((ops.n_dof, 2 * k))
+        for j, (nodes, th_b, f_r, f_t) in enumerate(points):
+            cos_b, sin_b = np.cos(n * th_b) * spread, np.sin(n * th_b) * spread
+            np.add.at(loads[:, j], 3 * nodes, f_r * cos_b)  # symmetric set
+            np.add.at(loads[:, j], 3 * nodes + 1, f_t * sin_b)
+            np.add.at(loads[:, k + j], 3 * nodes, f_r * sin_b)  # antisymmetric set
+            np.add.at(loads[:, k + j], 3 * nodes + 1, -f_t * cos_b)
+        amplitude = np.zeros((ops.n_dof, 2 * k))
+        amplitude[free] = spla.splu(ops.free_stiffness(n, storage_only=True)).solve(loads[free])
+        yield n, amplitude[:, :k], amplitude[:, k:]
 
 
 def loaded_displacement(tire: SectionTire, state: SectionStaticState, theta: np.ndarray) -> np.ndarray:
     """Displacement of every cross-section node at angles ``theta`` under the contact forces (m).
 
     Returns (n_theta, n_nodes, 3) components ``u_r, u_theta, u_y``: the harmonic sum of the
-    symmetric and antisymmetric sets, each harmonic one sparse solve with the static moduli.
+    symmetric and antisymmetric sets (:func:`loaded_amplitudes`).
     """
-    import scipy.sparse.linalg as spla
-
-    grid, ops = tire.grid, tire.ops
     theta = np.atleast_1d(np.asarray(theta, float))
-    col, row = np.nonzero(state.contact)
-    force = state.contact_force[col, row]
-    th_b = grid.theta[row]
-    f_r, f_t = -force * np.cos(th_b), force * np.sin(th_b)
-    nodes = grid.nodes[col]
-    free = ops.free
     out = np.zeros((theta.size, tire.mesh.n_nodes, 3))
-    for n in range(tire.harmonics + 1):
-        spread = np.sinc(n * grid.dtheta / (2 * np.pi))
-        cos_b, sin_b = np.cos(n * th_b) * spread, np.sin(n * th_b) * spread
-        loads = np.zeros((ops.n_dof, 2))
-        np.add.at(loads[:, 0], 3 * nodes, f_r * cos_b)  # symmetric set
-        np.add.at(loads[:, 0], 3 * nodes + 1, f_t * sin_b)
-        np.add.at(loads[:, 1], 3 * nodes, f_r * sin_b)  # antisymmetric set
-        np.add.at(loads[:, 1], 3 * nodes + 1, -f_t * cos_b)
-        amplitude = np.zeros((ops.n_dof, 2))
-        k = ops.free_stiffness(n, storage_only=True)
-        amplitude[free] = spla.splu(k).solve(loads[free])
-        sym, anti = amplitude[:, 0].reshape(-1, 3), amplitude[:, 1].reshape(-1, 3)
+    for n, symmetric, antisymmetric in loaded_amplitudes(tire, state):
+        sym, anti = symmetric[:, 0].reshape(-1, 3), antisymmetric[:, 0].reshape(-1, 3)
         c, s = np.cos(n * theta)[:, None], np.sin(n * theta)[:, None]
         out[:, :, 0] += c * sym[:, 0] + s * anti[:, 0]
         out[:, :, 1] += s * sym[:, 1] - c * anti[:, 1]
