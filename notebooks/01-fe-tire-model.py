@@ -350,7 +350,9 @@ def show_footprint(load_N=4512.0):
     plt.show()
 
 
-interact(show_footprint, load_N=FloatSlider(value=4512.0, min=1500.0, max=7000.0, step=250.0, continuous_update=False))
+_ = interact(
+    show_footprint, load_N=FloatSlider(value=4512.0, min=1500.0, max=7000.0, step=250.0, continuous_update=False)
+)
 
 # %% [markdown]
 # **Next:** notebook 02 computes the direct FRFs of every tassello, checks the paper's

@@ -499,7 +499,7 @@ def show_tassello(tassello=37):
     plt.show()
 
 
-interact(show_tassello, tassello=IntSlider(value=37, min=1, max=static.tasselli.n, continuous_update=False))
+_ = interact(show_tassello, tassello=IntSlider(value=37, min=1, max=static.tasselli.n, continuous_update=False))
 
 # %% [markdown]
 # **Next:** notebook 03 fits every local FRF with an 8-pole/8-zero transfer function

@@ -265,7 +265,7 @@ def show_fit(tassello=37, n_poles=14):
     plt.show()
 
 
-interact(
+_ = interact(
     show_fit,
     tassello=IntSlider(value=centre + 1, min=1, max=len(fits), continuous_update=False),
     n_poles=IntSlider(value=fits.n_poles, min=4, max=20, continuous_update=False),

@@ -389,7 +389,7 @@ def show_cleat(speed_kmh, height_mm, base_mm):
     plt.show()
 
 
-interact(
+_ = interact(
     show_cleat,
     speed_kmh=FloatSlider(value=speed_kmh, min=5.0, max=120.0, step=5.0, continuous_update=False),
     height_mm=FloatSlider(value=height * 1e3, min=2.0, max=30.0, step=1.0, continuous_update=False),

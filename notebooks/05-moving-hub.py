@@ -206,7 +206,7 @@ def show_moving_hub(hub_mass_kg, stiffness_N_per_mm):
     plt.show()
 
 
-interact(
+_ = interact(
     show_moving_hub,
     hub_mass_kg=FloatSlider(value=suspension.mass, min=5.0, max=80.0, step=1.0, continuous_update=False),
     stiffness_N_per_mm=FloatSlider(

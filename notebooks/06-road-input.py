@@ -272,7 +272,7 @@ def show_texture(texture, seed):
     plt.show()
 
 
-interact(
+_ = interact(
     show_texture,
     texture=Dropdown(options=texture_names, value=texture_names[0]),
     seed=IntSlider(value=seed, min=0, max=5000, continuous_update=False),

@@ -347,7 +347,7 @@ def show_corner(speed_kmh, texture, seed):
     plt.show()
 
 
-interact(
+_ = interact(
     show_corner,
     speed_kmh=FloatSlider(value=speed_kmh, min=30.0, max=160.0, step=10.0, continuous_update=False),
     texture=Dropdown(options=texture_names, value=texture_names[0]),

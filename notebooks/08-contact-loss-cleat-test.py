@@ -363,7 +363,7 @@ def show_contact(speed_kmh, height_mm):
     plt.show()
 
 
-interact(
+_ = interact(
     show_contact,
     speed_kmh=FloatSlider(value=cleat.dynamic_kmh, min=5.0, max=80.0, step=5.0, continuous_update=False),
     height_mm=FloatSlider(value=cleat.height * 1e3, min=2.0, max=25.0, step=1.0, continuous_update=False),

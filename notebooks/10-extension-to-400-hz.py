@@ -184,7 +184,7 @@ def show_band(band=400.0):
     plt.show()
 
 
-interact(show_band, band=FloatSlider(value=400.0, min=150.0, max=400.0, step=50.0, continuous_update=False))
+_ = interact(show_band, band=FloatSlider(value=400.0, min=150.0, max=400.0, step=50.0, continuous_update=False))
 
 # %% [markdown]
 # **Back to:** notebook 00 for the map of the collection and the reproduction report.

@@ -31,3 +31,20 @@ def test_readme_has_exactly_two_setup_commands():
     commands = [ln for ln in quick.splitlines() if ln.startswith("python3 -m venv")]
     assert len(commands) == 2
     assert commands[0].endswith("-m roadnoise_utils") and commands[1].endswith("-m pytest")
+
+
+def test_widget_cells_do_not_print_the_callback():
+    """``interact(f, ...)`` returns ``f``: left as a cell's last expression, its repr
+    (``<function show_...>``) prints under the widget. Every widget cell assigns it away, and no
+    executed notebook shows a function's repr."""
+    import json
+
+    for nb in collection.notebooks():
+        source = (REPO_ROOT / "notebooks" / nb["file"]).with_suffix(".py").read_text()
+        bare = re.findall(r"^interact(?:ive)?\(", source, re.M)
+        assert not bare, f"{nb['file']}: assign the widget (_ = interact(...))"
+        executed = json.loads((REPO_ROOT / "notebooks" / nb["file"]).read_text())
+        for cell in executed["cells"]:
+            for output in cell.get("outputs", []):
+                text = "".join(output.get("data", {}).get("text/plain", ""))
+                assert not text.startswith("<function"), f"{nb['file']}: {text[:60]}"
