@@ -98,12 +98,12 @@ class CavityFRFs:
 
 
 def cavity_frfs(conditions: CavityConditions | None = None, step: float = 1.0) -> CavityFRFs:
-    """``H_tot`` and ``G_H`` over the band every ``step`` Hz, without and with the cavity (13 waveguide modes)."""
+    """``H_tot`` and ``G_H`` over the band every ``step`` Hz, without and with the cavity (the tire file's ``[cavity] modes``)."""
     test = cavity_conditions() if conditions is None else conditions
     spec = stages.load_tire(test.tire)
     fet, static = stages.build_fet(spec), stages.solve_static(spec)
     cav = cavity_model.ring_tire_cavity(spec, test.temperature)
-    coupling = cavity_model.ring_cavity_coupling(fet, static, cav)
+    coupling = cavity_model.ring_cavity_coupling(fet, static, cav, n_modes=spec.cavity.modes)
     freqs = np.arange(test.band[0], test.band[1] + 0.5 * step, step)
     plain = frf_visco(fet, static, freqs, progress=False)
     with_cavity = frf_visco(fet, static, freqs, progress=False, cavity=coupling)

@@ -25,7 +25,19 @@ so the fixed-hub transfer is :math:`h = C_{eff}^{-1} t_{eff}` and
 :math:`G_H = -(D_{rim,eff} + t_{eff}^T h)`: the structure of the solve without the cavity, one
 low-rank (Woodbury) update of the footprint's even receptance. A rigid vertical rim motion
 changes the volume by :math:`\\tau` too (reciprocity): the bead DOF move with it and the base
-face sweeps :math:`r_{base} w_{rim} \\cos\\theta` per radian.
+face sweeps :math:`r_{base} w_{rim} \\cos\\theta` per radian. A rigid translation of the whole
+wheel changes the section's volume per radian by :math:`-A\\cos\\theta` (the wall's and the base's
+shares together, tested), so at rest a :math:`\\cos\\theta` pressure puts :math:`-\\pi A` on the hub,
+as on a free body.
+
+**Known limit: the air's static stiffening.** The uniform mode couples through the linear
+volume change about the round tire, :math:`dV/d\\delta \\approx -2\\cdot10^{-4}` m^2 on the
+165/65 R14, which stiffens the tire by ~4e-6 of :math:`K_v`. The loaded tire's own pressure
+sensitivity gives, through the Maxwell relation :math:`\\partial V/\\partial\\delta =
+-\\partial F/\\partial p_0`, a tangent of ~-1.4e-2 m^2 (70 % of the membrane bound :math:`F/p_0`), so
+~2 % of :math:`K_v` (helper review, issue 15): the difference is the belt's second-order,
+inextensible deformation, which a linear tire does not have. A rank-one term from two static
+solves at :math:`p_0 \\pm \\delta p` would make the limit exact; not done yet.
 """
 
 from __future__ import annotations

@@ -468,6 +468,8 @@ def footprint_frf(
     freqs = _check_inputs(tire, static, freqs)
     _mirror_pairs(static)  # before any work: the set must be symmetric
     f_max = float(freqs.max())
+    if reductions is None and cavity is not None:  # the wall's static shapes in the reduced harmonics
+        reductions = footprint_reductions(tire, f_max, cutoff_factor * f_max, cavity.cavity.wall)
     even = EvenFootprint.build(tire, static, f_max, cutoff_factor * f_max, reductions)
     return even.footprint(freqs, inertia=inertia, progress=progress, cavity=cavity)
 

@@ -40,8 +40,8 @@ reciprocity), and eliminating the pressure leaves a low-rank, frequency-dependen
 tire's dynamic stiffness that the fixed-hub FRFs take in (:func:`.response.frf.frf_visco`,
 ``cavity=``), and through them the fits, G_H and the RM chain when the tire file's
 ``[cavity] enabled`` is on. :func:`rolling_modes` gives the doublet of the rolling tire. The
-cross-section tire's cavity is :mod:`.section_cavity` (its loaded split; not yet its FRFs). Not
-yet: the cavity in the FE stages that step or reduce the tire, rolling in the FRFs.
+cross-section tire's cavity is :mod:`.section_cavity` and :mod:`..response.section_cavity_frf`.
+Not yet: the cavity in the FE stages that step or reduce the tire, rolling in the FRFs.
 
 **Limits found so far (a review of the physics, issue 15):**
 
@@ -51,6 +51,10 @@ yet: the cavity in the FE stages that step or reduce the tire, rolling in the FR
   near its contact area (1-2e-2 m^2, the pneumatic work balance): the air's compressibility adds
   1e-4 of K_v instead of ~2 % (the sidewalls' volume change and the dynamic pressure's change of
   the inflation pre-stress are left out).
+* the waveguide's area is the section's volume per radian over the centroid's radius in both its
+  stiffness and its mass, which puts the rigid torus's modes ~0.65 % low against the uniform
+  pressure's Rayleigh quotient with the stiffness weighted by :math:`R_c\\int dA/r` (243.6 against
+  242.1 Hz on the 165/65 R14 cross-section; helper review, issue 15), on both tire models.
 * the ring tire is calibrated to measured modes, which include the air: the cavity on top lowers
   its first vertical mode by ~3 Hz (80 -> 77 Hz on the 165/65 R14) until it is recalibrated.
 """
@@ -292,7 +296,7 @@ def modal_gains(
 
 
 def ring_cavity_coupling(
-    fet, static, cavity: Cavity, n_modes: int = 13, damping_ratio: float = DAMPING_RATIO
+    fet, static, cavity: Cavity, n_modes: int = 41, damping_ratio: float = DAMPING_RATIO
 ) -> CavityCoupling:
     """The loaded cavity of a ring tire (:func:`webster_modes` on :func:`loaded_area`, one acoustic
     node per belt node) and its coupling with the belt's radial motion and the rim's.
