@@ -197,10 +197,16 @@ def profile_input(
     lateral = _takes_lateral(profile)
     y_strips = strip_centres(static)
     on_grid = np.zeros((static.tasselli.n, n_grid))
-    z_uniform = None if lateral else _heights(profile, s)
-    for strip, rows, kernels in parts:
-        z = _heights(lambda ss, y=y_strips[strip]: profile(ss, y), s) if lateral else z_uniform
-        on_grid[rows] += _correlate(z, kernels, oversample, n_grid, step)
+    if lateral:  # each strip its own track
+        for strip, rows, kernels in parts:
+            z = _heights(lambda ss, y=y_strips[strip]: profile(ss, y), s)
+            on_grid[rows] += _correlate(z, kernels, oversample, n_grid, step)
+    else:  # one track under every strip: one correlation of every strip's kernels (the same sums, once)
+        stacked = _correlate(_heights(profile, s), np.vstack([k for _, _, k in parts]), oversample, n_grid, step)
+        first = 0
+        for _, rows, _ in parts:
+            on_grid[rows] += stacked[first : first + rows.size]
+            first += rows.size
     if grid == speed * dt:
         u = on_grid[:, :n]
     else:

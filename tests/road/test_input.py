@@ -44,3 +44,18 @@ def test_texture_input_tracks_and_seed(flat):
     c = texture_input(flat, spectrum, 20.0, 0.2, seed=4)
     assert a.u.shape == (flat.tasselli.n, a.t.size)
     assert np.array_equal(a.u, b.u) and not np.allclose(a.u, c.u)
+
+
+@pytest.mark.parametrize("speed", [30 / 3.6, 120 / 3.6])
+def test_a_2d_road_is_one_correlation_equal_to_the_per_strip_one(flat, speed):
+    """A road uniform across the width is correlated once with every strip's kernels; the same road
+    given as a 3-D road (``profile(s, y)``, one correlation per strip) gives the same inputs to round-off."""
+    from roadnoise_utils.road.input import profile_input
+
+    rng = np.random.default_rng(7)
+    x = np.linspace(-1.0, 40.0, 40001)
+    z = 1e-5 * np.cumsum(rng.standard_normal(x.size))
+    uniform = profile_input(flat, lambda s: np.interp(s, x, z), speed, (0.0, 30.0))
+    per_strip = profile_input(flat, lambda s, y: np.interp(s, x, z), speed, (0.0, 30.0))
+    assert np.abs(uniform.u - per_strip.u).max() < 1e-12 * np.abs(per_strip.u).max()
+    assert np.unique(flat.tasselli.node_strip).size > 1  # several strips: the per-strip path is a real loop
