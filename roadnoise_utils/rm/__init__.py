@@ -3,10 +3,13 @@
 ``fitting`` fits every local FRF with a rational function (paper Eq. 1, relaxed vector
 fitting; ``fitting_peer`` runs scikit-rf on the same data) -> ``realisation`` turns the fits
 into the block-diagonal fixed-hub tire (Eq. 2-4) -> ``moving_hub`` adds :math:`G_H`
-(Eq. 5-7) -> ``simulation`` drives either with tassello inputs in the time domain.
+(Eq. 5-7) -> ``simulation`` drives either with tassello inputs in the time domain;
+``aggregated`` gives the fixed-hub tire's force of a road flowing through the footprint without
+forming the inputs (one kernel per track, by FFT).
 """
 
-from . import fitting, fitting_peer, moving_hub, order, realisation, simulation
+from . import aggregated, fitting, fitting_peer, moving_hub, order, realisation, simulation
+from .aggregated import RoadHubForce, road_hub_force
 from .fitting import FitSet, RationalFit, fit_tasselli, vector_fit
 from .moving_hub import assemble_moving_hub, fit_hub, hub_statespace, rm_moving_hub
 from .order import fit_at_order, lowest_order, order_scan
@@ -15,6 +18,8 @@ from .simulation import ModalSections, SimulationResult, modal_sections, respons
 
 __all__ = [
     "FitSet",
+    "RoadHubForce",
+    "aggregated",
     "ModalSections",
     "RationalFit",
     "SimulationResult",
@@ -36,6 +41,7 @@ __all__ = [
     "realize",
     "response",
     "rm_moving_hub",
+    "road_hub_force",
     "simulate",
     "simulation",
     "vector_fit",

@@ -120,7 +120,7 @@ def foh_coefficients(pole: complex, dt: float) -> tuple[complex, complex, comple
     return complex(e), complex(first - g1), complex(g1)
 
 
-def _section_filter(section: Section, dt: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def section_filter(section: Section, dt: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Real IIR coefficients (b, a) of a section's FOH response, and the filter state that starts it at rest.
 
     ``lfilter`` with zero initial conditions would let the input ramp up from 0 during the
@@ -164,7 +164,7 @@ def _run(sections: ModalSections, u: np.ndarray, dt: float) -> np.ndarray:
     def run(part: list[Section]) -> np.ndarray:
         out = np.zeros(u.shape[1])
         for section in part:
-            b, a, zi = _section_filter(section, dt)
+            b, a, zi = section_filter(section, dt)
             v = u[section.source]
             out += lfilter(b, a, v, zi=zi * v[0])[0]
         return out

@@ -139,6 +139,97 @@ def _correlate(z: np.ndarray, kernels: np.ndarray, stride: int, n_out: int, step
     return step * (kernels @ windows.T)
 
 
+@dataclass(frozen=True, eq=False)
+class RoadGrid:
+    """Where a road flowing through the footprint is sampled (:func:`road_grid`): the time samples,
+    the road grid (``grid`` m per point, ``n_grid`` points) and its ``oversample`` times finer
+    correlation grid (``step`` m) whose road coordinates ``s`` every track is evaluated at, and the
+    tasselli's kernels per strip (:func:`.kernels.strip_kernels`)."""
+
+    t: np.ndarray
+    distance: np.ndarray
+    speed: float
+    grid: float
+    n_grid: int
+    step: float
+    oversample: int
+    s: np.ndarray
+    parts: list
+    lateral: bool
+    profile: object
+    strip_y: np.ndarray
+
+    @property
+    def on_time_steps(self) -> bool:
+        """Whether the road grid is the time step's (else the inputs are interpolated to the samples)."""
+        return self.grid == self.speed * (self.t[1] - self.t[0])
+
+    def tracks(self):
+        """Yields ``(parts, heights)``: each track's heights on ``s`` (m) with the strip parts
+        ``[(strip, rows, kernels)]`` that see it (one track for a 2-D road, one per strip for a 3-D one)."""
+        if not self.lateral:
+            yield self.parts, _heights(self.profile, self.s)
+            return
+        for part in self.parts:
+            strip = part[0]
+            yield [part], _heights(lambda ss, y=self.strip_y[strip]: self.profile(ss, y), self.s)
+
+
+def road_grid(
+    static: StaticState,
+    profile,
+    speed: float,
+    distance: tuple[float, float],
+    sample_rate: float | None = None,
+    oversample: int = 4,
+    check_memory=None,
+) -> RoadGrid:
+    """The sampling of :func:`profile_input` (same arguments), every argument checked before any work.
+
+    ``check_memory(n_samples, n_grid, step, dt)`` refuses what its user would allocate, before
+    anything is (default: :func:`profile_input`'s inputs).
+    """
+    _check_static(static)
+    speed = guards.real("speed", speed, 0.0, MAX_SPEED, lo_open=True, unit="m/s (km/h / 3.6)")
+    fs = sample_rate_for(speed) if sample_rate is None else sample_rate
+    check_sampling(speed, fs)
+    fs = float(fs)
+    d0, d1 = guards.interval("distance", distance)
+    oversample = guards.integer("oversample", oversample, 1, 64)
+    if not callable(profile):
+        raise ValueError(
+            f"profile = {profile!r} must be a function of the road coordinate: profile(s) or profile(s, y)"
+        )
+    dt = 1.0 / fs
+    n = int(np.floor((d1 - d0) / (speed * dt))) + 1
+    # road grid: one time step of road, but no finer than ROAD_GRID (slow runs are interpolated)
+    grid = max(speed * dt, min(ROAD_GRID, d1 - d0))
+    n_grid = int(np.ceil((d1 - d0) / grid)) + 1
+    step = grid / oversample
+    if check_memory is None:
+        _check_input_memory(static.tasselli, n, n_grid, step, oversample)
+    else:
+        check_memory(n, n_grid, step, dt)
+    t = dt * np.arange(n)
+    parts, x0 = strip_kernels(static.tasselli, step)
+    n_x = parts[0][2].shape[1]
+    s = x0 + d0 + step * np.arange(n_x + (n_grid - 1) * oversample)
+    return RoadGrid(
+        t=t,
+        distance=d0 + speed * t,
+        speed=float(speed),
+        grid=grid,
+        n_grid=n_grid,
+        step=step,
+        oversample=oversample,
+        s=s,
+        parts=parts,
+        lateral=_takes_lateral(profile),
+        profile=profile,
+        strip_y=strip_centres(static),
+    )
+
+
 def profile_input(
     static: StaticState,
     profile,
@@ -171,50 +262,24 @@ def profile_input(
         (or than :data:`ROAD_GRID` when a time step covers less road; the result is then
         interpolated linearly to the time samples).
     """
-    _check_static(static)
-    speed = guards.real("speed", speed, 0.0, MAX_SPEED, lo_open=True, unit="m/s (km/h / 3.6)")
-    fs = sample_rate_for(speed) if sample_rate is None else sample_rate
-    check_sampling(speed, fs)
-    fs = float(fs)
-    d0, d1 = guards.interval("distance", distance)
-    oversample = guards.integer("oversample", oversample, 1, 64)
-    if not callable(profile):
-        raise ValueError(
-            f"profile = {profile!r} must be a function of the road coordinate: profile(s) or profile(s, y)"
-        )
-    dt = 1.0 / fs
-    n = int(np.floor((d1 - d0) / (speed * dt))) + 1
-    # road grid: one time step of road, but no finer than ROAD_GRID (slow runs are interpolated)
-    grid = max(speed * dt, min(ROAD_GRID, d1 - d0))
-    n_grid = int(np.ceil((d1 - d0) / grid)) + 1
-    step = grid / oversample
-    _check_input_memory(static.tasselli, n, n_grid, step, oversample)
-    t = dt * np.arange(n)
-    distance_samples = d0 + speed * t
-    parts, x0 = strip_kernels(static.tasselli, step)
-    n_x = parts[0][2].shape[1]
-    s = x0 + d0 + step * np.arange(n_x + (n_grid - 1) * oversample)
-    lateral = _takes_lateral(profile)
-    y_strips = strip_centres(static)
+    where = road_grid(static, profile, speed, distance, sample_rate, oversample)
+    n, n_grid, step = where.t.size, where.n_grid, where.step
     on_grid = np.zeros((static.tasselli.n, n_grid))
-    if lateral:  # each strip its own track
-        for strip, rows, kernels in parts:
-            z = _heights(lambda ss, y=y_strips[strip]: profile(ss, y), s)
-            on_grid[rows] += _correlate(z, kernels, oversample, n_grid, step)
-    else:  # one track under every strip: one correlation of every strip's kernels (the same sums, once)
-        stacked = _correlate(_heights(profile, s), np.vstack([k for _, _, k in parts]), oversample, n_grid, step)
+    for parts, z in where.tracks():
+        # a 2-D road: one track under every strip, one correlation of every strip's kernels
+        stacked = _correlate(z, np.vstack([k for _, _, k in parts]), where.oversample, n_grid, step)
         first = 0
         for _, rows, _ in parts:
             on_grid[rows] += stacked[first : first + rows.size]
             first += rows.size
-    if grid == speed * dt:
+    if where.on_time_steps:
         u = on_grid[:, :n]
     else:
-        position = (distance_samples - d0) / grid
+        position = (where.distance - where.distance[0]) / where.grid
         left = np.minimum(np.floor(position).astype(int), n_grid - 2)
         frac = position - left
         u = on_grid[:, left] * (1 - frac) + on_grid[:, left + 1] * frac
-    return RoadInput(t=t, distance=distance_samples, u=u, speed=float(speed), description=description)
+    return RoadInput(t=where.t, distance=where.distance, u=u, speed=where.speed, description=description)
 
 
 def _check_input_memory(tasselli, n: int, n_grid: int, step: float, oversample: int) -> None:
