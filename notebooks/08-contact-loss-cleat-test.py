@@ -258,7 +258,7 @@ for speed, dt in ((0.1, 5e-3), (0.03, 1e-2)):
 # The cleat's impact also rings the tread at kHz in the raw hub force (the ring's massless tread
 # springs do not ring); the paper's model and its measurement are 0-250 Hz, so the run is
 # compared band-limited to 250 Hz, as printed below. The step is 1/6000 s, 24 samples per period
-# at 250 Hz: halving it raises that peak by 0.2 % (a test holds it under 0.5 %) for twice the work.
+# at 250 Hz: halving it moves that peak by less than 0.5 % (a test holds it there) for twice the work.
 
 # %%
 # NBVAL_IGNORE_OUTPUT

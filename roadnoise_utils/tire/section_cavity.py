@@ -62,12 +62,17 @@ def section_area(tire: SectionTire) -> tuple[float, float]:
     _, _, r, ndl = _contour(tire)
     area = float(np.sum(r * ndl[:, 0]))
     volume = float(np.sum(0.5 * r**2 * ndl[:, 0]))
-    mesh = tire.mesh
-    ends = mesh.face_lines(0)[[0, -1], [0, -1]]
-    width = float(abs(mesh.y[ends[1]] - mesh.y[ends[0]]))
-    base = tire.spec.geometry.rim_radius
+    base, width = _rim_base(tire)
     # the base faces the axle (n_r = -1) across the width; the flanges are radial (n_r = 0)
     return area - base * width, volume - 0.5 * base**2 * width
+
+
+def _rim_base(tire: SectionTire) -> tuple[float, float]:
+    """The rim's base closing the section: its radius (the bead seat's) and width (between the inner
+    face's two ends), m."""
+    mesh = tire.mesh
+    ends = mesh.face_lines(0)[[0, -1], [0, -1]]
+    return tire.spec.geometry.rim_radius, float(abs(mesh.y[ends[1]] - mesh.y[ends[0]]))
 
 
 def wall_volume(tire: SectionTire) -> np.ndarray:
@@ -97,7 +102,6 @@ class SectionCavity:
     cavity: Cavity
     wall: np.ndarray
     rim_face: float
-    volume_per_radian: float
 
 
 def section_cavity(tire: SectionTire, temperature: float | None = None) -> SectionCavity:
@@ -110,14 +114,11 @@ def section_cavity(tire: SectionTire, temperature: float | None = None) -> Secti
     sound, density = air(
         spec.cavity.temperature if temperature is None else temperature, spec.operating.inflation_pressure
     )
-    base = spec.geometry.rim_radius
+    base, width = _rim_base(tire)
     # a rectangle of the same area whose mid-radius is the centroid's: Cavity's mean radius and area
     height = 2.0 * (centroid - base)
     cavity = Cavity(base, base + height, area / height, sound, density)
-    mesh = tire.mesh
-    ends = mesh.face_lines(0)[[0, -1], [0, -1]]
-    width = float(abs(mesh.y[ends[1]] - mesh.y[ends[0]]))
-    return SectionCavity(cavity=cavity, wall=wall_volume(tire), rim_face=base * width, volume_per_radian=volume)
+    return SectionCavity(cavity=cavity, wall=wall_volume(tire), rim_face=base * width)
 
 
 def loaded_areas(
