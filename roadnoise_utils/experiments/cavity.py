@@ -23,19 +23,30 @@ from .conditions import load_conditions, resolve
 
 @dataclass(frozen=True)
 class CavityConditions:
-    """The cavity's test: tire file, loads (N), FRF band (Hz), air temperature (deg C), rolling speeds (km/h)."""
+    """The cavity's test: tire file, loads (N), FRF band (Hz), air temperature (deg C), rolling speeds (km/h) of the
+    doublet and of the rolling FRFs, and the rolling FRFs' band (Hz)."""
 
     tire: str
     loads: tuple[float, ...]
     band: tuple[float, float]
     temperature: float
     speeds_kmh: tuple[float, ...]
+    rolling_frf_speeds_kmh: tuple[float, ...]
+    rolling_band: tuple[float, float]
 
 
 def cavity_conditions(tire: str | None = None) -> CavityConditions:
     """``[cavity]`` of ``data/conditions/whole_car.toml`` (read once), ``tire`` overriding its tire."""
     values = resolve(
-        load_conditions("whole_car"), "cavity", tire=tire, loads=None, band=None, temperature=None, speeds_kmh=None
+        load_conditions("whole_car"),
+        "cavity",
+        tire=tire,
+        loads=None,
+        band=None,
+        temperature=None,
+        speeds_kmh=None,
+        rolling_frf_speeds_kmh=None,
+        rolling_band=None,
     )
     loads = tuple(guards.real("cavity.loads", v, 0.0, 2.0e4, lo_open=True, unit="N") for v in values["loads"])
     if len(loads) < 2:
@@ -43,7 +54,12 @@ def cavity_conditions(tire: str | None = None) -> CavityConditions:
     band = guards.interval("cavity.band", values["band"])
     speeds = tuple(guards.real("cavity.speeds_kmh", v, 0.0, 300.0, unit="km/h") for v in values["speeds_kmh"])
     temperature = guards.real("cavity.temperature", values["temperature"])
-    return CavityConditions(str(values["tire"]), loads, band, temperature, speeds)
+    frf_speeds = tuple(
+        guards.real("cavity.rolling_frf_speeds_kmh", v, 0.0, 300.0, unit="km/h")
+        for v in values["rolling_frf_speeds_kmh"]
+    )
+    rolling_band = guards.interval("cavity.rolling_band", values["rolling_band"])
+    return CavityConditions(str(values["tire"]), loads, band, temperature, speeds, frf_speeds, rolling_band)
 
 
 def split_against_load(conditions: CavityConditions | None = None) -> pd.DataFrame:
@@ -141,17 +157,32 @@ def band_gains(
     return pd.DataFrame(rows).T
 
 
+def _loaded_cavity(spec: TireSpec, temperature: float) -> tuple[cavity_model.Cavity, np.ndarray]:
+    """The cavity of either tire model and its section around the tire loaded at its file's load (m^2)."""
+    if stages.is_cross_section(spec):
+        cav = section_cavity.section_cavity(section_stages.section_tire(spec), temperature).cavity
+        _, areas = section_stages.cavity_areas(spec, (spec.operating.vertical_load,))
+        return cav, areas[0]
+    cav = cavity_model.ring_tire_cavity(spec, temperature)
+    return cav, cavity_model.loaded_area(cav, stages.solve_static(spec))
+
+
+def flow_speed(spec: TireSpec, cavity: cavity_model.Cavity, speed_kmh: float) -> float:
+    """The air's speed round the waveguide's axis (m/s) on a tire rolling at ``speed_kmh``: it turns with the
+    wheel, :math:`U = \\Omega R_{mean}`, :math:`\\Omega = V/R` (the tire's outer radius)."""
+    return speed_kmh / 3.6 * cavity.mean_radius / spec.geometry.outer_radius
+
+
 def rolling_split(conditions: CavityConditions | None = None) -> pd.DataFrame:
     """The loaded cavity's first doublet at each rolling speed (:func:`.tire.cavity.rolling_modes`): the
     wheel's rotation frequency, the two frequencies and their separation (Hz), with the closed form
-    :math:`2\\sqrt{(\\Delta_0/2)^2 + f_{rot}^2}`."""
+    :math:`2\\sqrt{(\\Delta_0/2)^2 + f_{rot}^2}`. Either tire model (its loaded section at its file's load)."""
     test = cavity_conditions() if conditions is None else conditions
     spec = stages.load_tire(test.tire)
-    cav = cavity_model.ring_tire_cavity(spec, test.temperature)
-    area = cavity_model.loaded_area(cav, stages.solve_static(spec))
+    cav, area = _loaded_cavity(spec, test.temperature)
     rows = []
     for kmh in test.speeds_kmh:
-        flow = kmh / 3.6 * cav.mean_radius / spec.geometry.outer_radius  # the air turns with the wheel
+        flow = flow_speed(spec, cav, kmh)
         rest, rolling = cavity_model.rolling_modes(cav, area, flow)
         f_rot = flow / (2.0 * np.pi * cav.mean_radius)
         rows.append(
@@ -165,3 +196,41 @@ def rolling_split(conditions: CavityConditions | None = None) -> pd.DataFrame:
             }
         )
     return pd.DataFrame(rows)
+
+
+@dataclass(frozen=True, eq=False)
+class RollingCavityFRFs:
+    """The ring tire's fixed-hub ``H_tot`` and ``G_H`` (n_speeds, n_freq; N/m) with its cavity's air streaming at
+    each of ``speeds_kmh``, and the waveguide's rolling doublet at each speed (Hz, (n_speeds, 2))."""
+
+    speeds_kmh: tuple[float, ...]
+    freqs: np.ndarray
+    H_tot: np.ndarray
+    G_H: np.ndarray
+    doublets: np.ndarray
+
+
+def rolling_frfs(conditions: CavityConditions | None = None, step: float = 1.0) -> RollingCavityFRFs:
+    """``H_tot`` and ``G_H`` of the ring tire with its rolling cavity (:func:`.tire.cavity.rolling_coupling`) at
+    the conditions' ``rolling_frf_speeds_kmh``, over ``rolling_band`` every ``step`` Hz."""
+    test = cavity_conditions() if conditions is None else conditions
+    spec = stages.load_tire(test.tire)
+    if stages.is_cross_section(spec):
+        raise ValueError(
+            f"tire = {test.tire!r}: the rolling cavity's FRFs are built for the ring tire (the cross-section tire's "
+            "coupling keeps its even modes only; its rolling doublet is rolling_split)"
+        )
+    fet, static = stages.build_fet(spec), stages.solve_static(spec)
+    cav = cavity_model.ring_tire_cavity(spec, test.temperature)
+    coupling = cavity_model.ring_cavity_coupling(fet, static, cav, n_modes=spec.cavity.modes)
+    freqs = np.arange(test.rolling_band[0], test.rolling_band[1] + 0.5 * step, step)
+    h_tot, g_h, doublets = [], [], []
+    for kmh in test.rolling_frf_speeds_kmh:
+        flow = flow_speed(spec, cav, kmh)
+        result = frf_visco(
+            fet, static, freqs, progress=False, cavity=cavity_model.rolling_coupling(coupling, cav, flow)
+        )
+        h_tot.append(result.H_tot)
+        g_h.append(result.G_H)
+        doublets.append(cavity_model.rolling_modes(cav, coupling.area, flow)[1][:2])
+    return RollingCavityFRFs(test.rolling_frf_speeds_kmh, freqs, np.array(h_tot), np.array(g_h), np.array(doublets))

@@ -192,3 +192,19 @@ def plot_hub_and_heave(
         ax.set_xlim(*f_range)
         ax.legend()
     return fig
+
+
+def plot_rolling_cavity(result) -> plt.Figure:
+    """|H_tot| and |G_H| of the fixed-hub tire with its rolling cavity at each speed, the waveguide's rolling
+    doublet of each speed marked in its colour (``result``: :class:`.experiments.cavity.RollingCavityFRFs`)."""
+    fig, axes = plt.subplots(1, 2, figsize=(10, 3.8), sharex=True)
+    colours = plt.cm.viridis(np.linspace(0.0, 0.85, len(result.speeds_kmh)))
+    for ax, values, label in zip(axes, (result.H_tot, result.G_H), ("|H_tot| (N/m)", "|G_H| (N/m)")):
+        for speed, response, doublet, colour in zip(result.speeds_kmh, values, result.doublets, colours):
+            ax.semilogy(result.freqs, np.abs(response), color=colour, lw=1.2, label=f"{speed:.0f} km/h")
+            for f_mode in doublet:
+                ax.axvline(f_mode, color=colour, ls=":", lw=0.9)
+        ax.set_ylabel(label)
+        ax.set_xlabel("Frequency (Hz)")
+    axes[0].legend(fontsize=8, title="dotted: the waveguide's doublet", title_fontsize=8)
+    return fig

@@ -85,8 +85,12 @@ class HubForceSolver:
         basis = None
         if use_symmetry:
             footprint = np.asarray(loaded.road_input.sum(axis=1)).ravel()
-            hub_rows = [loaded.hub_elastic, *loaded.hub_compound.values()]
-            basis = symmetric_basis(loaded.fet.mesh, list(parts.values()), [footprint, *hub_rows])
+            vectors = [footprint, loaded.hub_elastic, *loaded.hub_compound.values()]
+            if loaded.rolling:  # the streaming air mixes the fore-aft odd and even modes: left-right only
+                flow = loaded.cavity.flow
+                walls = (loaded.cavity.volume, flow.slope, flow.curvature)
+                vectors += [column[loaded.free] for wall in walls for column in wall.T]
+            basis = symmetric_basis(loaded.fet.mesh, list(parts.values()), vectors, fore_aft=not loaded.rolling)
         self.basis = basis
         self.symmetric = basis is not None
         if basis is None:
@@ -131,24 +135,30 @@ class HubForceSolver:
         y = t @ solve(np.asarray(t.T @ row), trans="T")
         g_tread = lt.fet.modulus_ratio("tread", omega)
         points = -g_tread * (lt.road_input.T @ y)
-        hub = -lt.hub_diagonal(omega) + y @ row
+        hub = -lt.hub_diagonal(omega) + y @ (row if lt.cavity is None else lt.hub_column(omega))
         u = t @ solve(np.asarray(t.T @ (g_tread * self._footprint)))
         return {"points": points, "G_H": hub, "H_tot": -(row @ u)}
 
     def _solver(self, lu, omega: float):
-        """Solves with :math:`D(\\omega)`, or with the cavity's :math:`D - V C V^T` by Woodbury's identity
-        :math:`x + Z C (I - V^T Z C)^{-1} V^T x`, :math:`Z = D^{-1} V` (both symmetric: ``trans`` alike)."""
+        """Solves with :math:`D(\\omega)`, or with the cavity's :math:`D - V C W^T` by Woodbury's identity
+        :math:`x + Z C (I - W^T Z C)^{-1} W^T x`, :math:`Z = D^{-1} V`, :math:`x = D^{-1} b`; transposed
+        (``trans="T"``, :math:`D` symmetric) with :math:`V \\leftrightarrow W` and :math:`C^T`. At rest
+        :math:`W = V` (one set of solves)."""
         terms = self.loaded.cavity_terms(omega)
         if terms is None:
             return lu.solve
-        v = np.asarray(self._basis.T @ terms[0])
-        c = terms[1]
-        z = lu.solve(v.astype(complex))
-        capacitance = np.eye(c.size) - (v.T @ z) * c[None, :]
+        t = self._basis
+        v, c, w = np.asarray(t.T @ terms[0]), terms[1], np.asarray(t.T @ terms[2])
+        z_v = lu.solve(v.astype(complex))
+        z_w = z_v if terms[2] is terms[0] else lu.solve(w.astype(complex))
+        forward = np.eye(c.shape[0]) - (w.T @ z_v) @ c
+        adjoint = np.eye(c.shape[0]) - (v.T @ z_w) @ c.T
 
         def solve(rhs: np.ndarray, trans: str = "N") -> np.ndarray:
             x = lu.solve(rhs, trans=trans)
-            return x + z @ (c * np.linalg.solve(capacitance, v.T @ x))
+            if trans == "N":
+                return x + z_v @ (c @ np.linalg.solve(forward, w.T @ x))
+            return x + z_w @ (c.T @ np.linalg.solve(adjoint, v.T @ x))
 
         return solve
 
@@ -211,5 +221,6 @@ def frf_visco(
         out = solver.solve(2 * np.pi * f)
         points[:, i], hub[i], total[i] = out["points"], out["G_H"], out["H_tot"]
     membership = sp.csr_matrix(static.tasselli.membership())
-    method = "direct, mirror-symmetric reduction" if solver.symmetric else "direct, full system"
+    reduction = "left-right symmetric reduction" if solver.loaded.rolling else "mirror-symmetric reduction"
+    method = f"direct, {reduction}" if solver.symmetric else "direct, full system"
     return FRFResult(freqs=freqs, H=membership @ points, H_tot=total, G_H=hub, H_points=points, method=method)

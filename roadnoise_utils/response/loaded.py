@@ -72,13 +72,17 @@ class LoadedTire:
     road_input: sp.csr_matrix
     cavity: CavityCoupling | None = None
 
-    def cavity_terms(self, omega: float) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
-        """``(V_free, c, v_hub)``: the cavity adds :math:`-V\\,\\mathrm{diag}(c)\\,V^T` to the dynamic
-        stiffness on the free DOF (``V_free`` (n_free, modes)); ``v_hub`` (modes,) is the hub-vertical row of ``V``."""
+    def cavity_terms(self, omega: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None:
+        """``(V_free, C, W_free, v_hub, w_hub)``: the cavity adds :math:`-V C W^T` to the dynamic stiffness
+        (:meth:`.tire.cavity.CavityCoupling.terms`); ``V_free``, ``W_free`` (n_free, modes) on the free DOF,
+        ``v_hub``, ``w_hub`` (modes,) their hub-vertical rows. At rest ``C`` is diagonal and ``W = V``."""
         if self.cavity is None:
             return None
         hub = self.fet.mesh.hub_dofs[1]
-        return self.cavity.volume[self.free], self.cavity.gains(omega), self.cavity.volume[hub]
+        c, w = self.cavity.terms(omega)
+        v = self.cavity.volume
+        v_free = v[self.free]
+        return v_free, c, (v_free if w is v else w[self.free]), v[hub], w[hub]
 
     @property
     def n_contact(self) -> int:
@@ -103,16 +107,35 @@ class LoadedTire:
         return (self.stiffness(omega, storage_only) - omega**2 * self.M).tocsc()
 
     def hub_row(self, omega: float, storage_only: bool = False) -> np.ndarray:
-        """Hub-vertical row :math:`K_{hf}(\\omega)` on the free DOF (N/m)."""
+        """Hub-vertical row :math:`K_{hf}(\\omega)` on the free DOF (N/m): the hub force per unit motion of each DOF."""
+        row = self._hub_elastic_row(omega, storage_only)
+        terms = self.cavity_terms(omega)
+        if terms is not None:  # the pressure the belt's motion makes, on the rim
+            _, c, w_free, v_hub, _ = terms
+            row = row - w_free @ (c.T @ v_hub)
+        return row
+
+    def hub_column(self, omega: float, storage_only: bool = False) -> np.ndarray:
+        """Hub-vertical column :math:`K_{fh}(\\omega)` on the free DOF (N/m): the force on each DOF per unit hub
+        motion; :meth:`hub_row` but for a rolling cavity, whose coupling is not reciprocal."""
+        column = self._hub_elastic_row(omega, storage_only)
+        terms = self.cavity_terms(omega)
+        if terms is not None:  # the pressure the rim's motion makes, on the belt
+            v_free, c, _, _, w_hub = terms
+            column = column - v_free @ (c @ w_hub)
+        return column
+
+    def _hub_elastic_row(self, omega: float, storage_only: bool) -> np.ndarray:
         g = self.ratios(omega, storage_only)
         row = self.hub_elastic.astype(complex)
         for name, r in self.hub_compound.items():
             row = row + g[name] * r
-        terms = self.cavity_terms(omega)
-        if terms is not None:  # the pressure the belt's motion makes, on the rim
-            v_free, c, v_hub = terms
-            row = row - v_free @ (c * v_hub)
         return row
+
+    @property
+    def rolling(self) -> bool:
+        """Whether the coupled cavity's air streams (:func:`.tire.cavity.rolling_coupling`): no mirror symmetry."""
+        return self.cavity is not None and self.cavity.rolling
 
     def hub_diagonal(self, omega: float, storage_only: bool = False) -> complex:
         """Hub-vertical diagonal stiffness :math:`K_{hh}(\\omega)` (N/m)."""
@@ -120,8 +143,8 @@ class LoadedTire:
         diagonal = self.hub_hub_elastic + sum(g[name] * v for name, v in self.hub_hub_compound.items())
         terms = self.cavity_terms(omega)
         if terms is not None:  # the pressure the rim's own motion makes, on the rim
-            _, c, v_hub = terms
-            diagonal = diagonal - np.sum(c * v_hub**2)
+            _, c, _, v_hub, w_hub = terms
+            diagonal = diagonal - v_hub @ c @ w_hub
         return diagonal
 
 

@@ -39,9 +39,11 @@ motion and the rim's change the cavity's volume, the pressure pushes on both (on
 reciprocity), and eliminating the pressure leaves a low-rank, frequency-dependent term in the
 tire's dynamic stiffness that the fixed-hub FRFs take in (:func:`.response.frf.frf_visco`,
 ``cavity=``), and through them the fits, G_H and the RM chain when the tire file's
-``[cavity] enabled`` is on. :func:`rolling_modes` gives the doublet of the rolling tire. The
-cross-section tire's cavity is :mod:`.section_cavity` and :mod:`..response.section_cavity_frf`.
-Not yet: the cavity in the FE stages that step or reduce the tire, rolling in the FRFs.
+``[cavity] enabled`` is on. :func:`rolling_modes` gives the doublet of the rolling tire and
+:func:`rolling_coupling` puts the rolling air into the FRFs (the convected waveguide, the tire's
+structure at rest). The cross-section tire's cavity is :mod:`.section_cavity` and
+:mod:`..response.section_cavity_frf` (at rest). Not yet: the cavity in the FE stages that step or
+reduce the tire.
 
 **Limits found so far (a review of the physics, issue 15):**
 
@@ -61,7 +63,7 @@ Not yet: the cavity in the FE stages that step or reduce the tire, rolling in th
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 import scipy.linalg as sla
@@ -250,6 +252,48 @@ DAMPING_RATIO = 0.01
 
 
 @dataclass(frozen=True, eq=False)
+class RollingFlow:
+    """The air of the rolling tire streaming through the loaded cavity at ``speed`` :math:`U` (m/s, hub frame),
+    in a coupling's modes (:func:`rolling_coupling`).
+
+    ``convection`` :math:`g = \\Phi^T C_A \\Phi` (1/m; :math:`C_A = \\int A N N'^T ds`, :func:`convection_matrix`);
+    ``slope`` and ``curvature`` (n_dof, modes): :math:`G^T C_0^T \\Phi^T/\\Delta s` and
+    :math:`G^T K_0 \\Phi^T/\\Delta s`, the wall's volume change carried along by the flow
+    (:math:`C_0, K_0` the unweighted convection and stiffness matrices, :math:`\\Delta s` the node spacing).
+    """
+
+    speed: float
+    convection: np.ndarray
+    slope: np.ndarray
+    curvature: np.ndarray
+
+    def terms(self, coupling: CavityCoupling, omega: float) -> tuple[np.ndarray, np.ndarray]:
+        """``(C, W)`` of :meth:`CavityCoupling.terms` at ``omega`` > 0 (rad/s), the air streaming.
+
+        The convected Webster equation with the wall's motion as a volume source seen by the moving air,
+        :math:`\\frac{A}{c^2} D_t^2 p - (A p')' = -\\rho D_t^2 q`, :math:`D_t = \\partial_t + U \\partial_s`
+        (Myers' condition on a wall the flow runs along: the tire's belt turns with its air), in the modes
+        at rest, :math:`p = \\Phi^T a` (:math:`x = \\omega/c`, :math:`\\beta = U/c`):
+
+        .. math:: [(1 - \\beta^2) \\Lambda (1 + 2 i \\zeta) - x^2 I + 2 i x \\beta g]\\, a
+                  = \\rho c^2 (x^2 V - 2 i x \\beta V_s + \\beta^2 V_{ss})^T u,
+
+        so :math:`C = \\rho c^2 [\\dots]^{-1}` and :math:`W = x^2 V - 2 i x\\beta V_s + \\beta^2 V_{ss}`; at
+        :math:`\\beta = 0` they are :meth:`CavityCoupling.gains` and :math:`V`. The uniform mode's row carries
+        :math:`x` on both sides and is divided by it (finite as :math:`\\omega \\to 0`).
+        """
+        c = coupling.sound_speed
+        beta, x = self.speed / c, omega / c
+        lam = (coupling.omegas / c) ** 2 * (1.0 + 2j * coupling.damping_ratio)
+        operator = (1.0 - beta**2) * np.diag(lam) - x**2 * np.eye(lam.size) + 2j * x * beta * self.convection
+        wall = x**2 * coupling.volume - 2j * x * beta * self.slope + beta**2 * self.curvature
+        uniform = coupling.omegas == 0.0
+        operator[uniform] /= x
+        wall[:, uniform] /= x
+        return coupling.density * c**2 * np.linalg.inv(operator), wall
+
+
+@dataclass(frozen=True, eq=False)
 class CavityCoupling:
     """The cavity's modes coupled to a ring tire's DOF (all of them, hub included).
 
@@ -273,10 +317,28 @@ class CavityCoupling:
     modes: CavityModes
     wall: sp.csr_matrix
     area: np.ndarray
+    flow: RollingFlow | None = None
 
     def gains(self, omega: float) -> np.ndarray:
-        """:func:`modal_gains` of these modes at ``omega`` (rad/s)."""
+        """:func:`modal_gains` of these modes at ``omega`` (rad/s), the cavity at rest."""
         return modal_gains(self.omegas, omega, self.density, self.sound_speed, self.damping_ratio)
+
+    @property
+    def rolling(self) -> bool:
+        """Whether the air streams through the footprint (:func:`rolling_coupling`)."""
+        return self.flow is not None and self.flow.speed != 0.0
+
+    def terms(self, omega: float) -> tuple[np.ndarray, np.ndarray]:
+        """``(C, W)``: the cavity adds :math:`-V C W^T` to the tire's dynamic stiffness at ``omega`` (rad/s).
+
+        At rest :math:`C = \\mathrm{diag}(c_m)` (:meth:`gains`) and :math:`W = V` (reciprocity);
+        rolling, :math:`C` and :math:`W` are those of the convected waveguide (:class:`RollingFlow`).
+        """
+        if (
+            not self.rolling or omega == 0.0
+        ):  # at 0 Hz: the air's compressibility (the flow's O(beta^2) static pressure left out)
+            return np.diag(self.gains(omega)), self.volume
+        return self.flow.terms(self, omega)
 
 
 def modal_gains(
@@ -368,12 +430,7 @@ def rolling_modes(
     beta = guards.real("flow_speed", flow_speed, 0.0, 0.5 * cavity.sound_speed, unit="m/s (half the speed of sound)")
     beta /= cavity.sound_speed
     stiffness, _ = waveguide_matrices(cavity, area)
-    n = area.size
-    a = 0.5 * (area + np.roll(area, -1))
-    i, j = np.arange(n), (np.arange(n) + 1) % n
-    # convection, int A N_i N_j' ds on each element: [[-1, 1], [-1, 1]] a / 2
-    rows, cols = np.concatenate([i, i, j, j]), np.concatenate([i, j, i, j])
-    convection = sp.csr_matrix((np.concatenate([-a, a, -a, a]) / 2.0, (rows, cols)), shape=(n, n))
+    convection = convection_matrix(area)
     rest = webster_modes(cavity, area, n_basis)
     phi = rest.shapes.T  # (n, m), mass-normalised
     lam = np.diag(phi.T @ (stiffness @ phi))  # k_m^2 (1/m^2)
@@ -385,3 +442,42 @@ def rolling_modes(
     # the uniform mode's double root at 0 (and round-off about it) is left out
     freqs = np.sort(x.real[x.real > 1e-3 * np.sqrt(lam[1])]) * cavity.sound_speed / (2.0 * np.pi)
     return rest.freqs[1:], freqs[: m - 1]
+
+
+def convection_matrix(area: np.ndarray) -> sp.csr_matrix:
+    """:math:`C_A = \\int A N N'^T ds` of :func:`waveguide_matrices`' periodic linear elements (-, times m^2):
+    on each element :math:`[[-1, 1], [-1, 1]]\\, a/2` (``a`` the element's mean area)."""
+    area = np.asarray(area, float)
+    n = area.size
+    a = 0.5 * (area + np.roll(area, -1))
+    i, j = np.arange(n), (np.arange(n) + 1) % n
+    rows, cols = np.concatenate([i, i, j, j]), np.concatenate([i, j, i, j])
+    return sp.csr_matrix((np.concatenate([-a, a, -a, a]) / 2.0, (rows, cols)), shape=(n, n))
+
+
+def rolling_coupling(coupling: CavityCoupling, cavity: Cavity, flow_speed: float) -> CavityCoupling:
+    """``coupling`` with its air streaming through the footprint at ``flow_speed`` (m/s): the rolling tire's cavity.
+
+    Rolling, the air turns with the wheel while the loaded section stays under the axle: seen from the
+    hub it flows around the waveguide at :math:`U = \\Omega R` (:func:`rolling_modes`). The coupled FRFs
+    (:func:`.response.frf.frf_visco`) then carry the rolling doublet instead of the one at rest; the
+    flow mixes the even (vertical) and odd (fore-aft) modes, so the FRFs are solved without the
+    mirror-symmetric reduction. The tire's structure is the paper's, linearised about the tire at
+    rest (its own gyroscopic and centrifugal terms are left out); the air's convection is the
+    change. ``flow_speed = 0`` gives the coupling at rest.
+    """
+    speed = guards.real("flow_speed", flow_speed, 0.0, 0.5 * cavity.sound_speed, unit="m/s (half the speed of sound)")
+    if speed == 0.0:
+        return replace(coupling, flow=None)
+    n = coupling.area.size
+    spacing = 2.0 * np.pi * cavity.mean_radius / n
+    ones = np.ones(n)
+    phi = coupling.modes.shapes.T  # (nodes, modes)
+    stiffness0, _ = waveguide_matrices(cavity, ones)
+    flow = RollingFlow(
+        speed=speed,
+        convection=phi.T @ (convection_matrix(coupling.area) @ phi),
+        slope=np.asarray(coupling.wall.T @ (convection_matrix(ones).T @ phi)) / spacing,
+        curvature=np.asarray(coupling.wall.T @ (stiffness0 @ phi)) / spacing,
+    )
+    return replace(coupling, flow=flow)

@@ -46,13 +46,17 @@ def _commutes(mirror: sp.csr_matrix, matrix: sp.spmatrix) -> bool:
     return diff.nnz == 0 or abs(diff).max() <= SYMMETRY_TOLERANCE * scale
 
 
-def symmetric_basis(mesh: BeltMesh, matrices: list[sp.spmatrix], vectors: list[np.ndarray]) -> sp.csr_matrix | None:
+def symmetric_basis(
+    mesh: BeltMesh, matrices: list[sp.spmatrix], vectors: list[np.ndarray], fore_aft: bool = True
+) -> sp.csr_matrix | None:
     """Basis (n_belt_dof, n_sym) of the doubly mirror-symmetric belt motions, or ``None``.
 
     ``matrices`` (belt DOF) must commute with both mirrors and ``vectors`` be invariant for
-    the reduction to be exact; otherwise ``None`` is returned.
+    the reduction to be exact; otherwise ``None`` is returned. With ``fore_aft=False`` only the
+    left-right mirror is used (half the DOF, both fore-aft parities): the basis of a problem that
+    is symmetric left-right only, as the tire whose cavity's air streams through the footprint.
     """
-    mirrors = [mirror(mesh, True), mirror(mesh, False)]
+    mirrors = [mirror(mesh, False)] + ([mirror(mesh, True)] if fore_aft else [])
     for m in mirrors:
         if not all(_commutes(m, a) for a in matrices):
             return None
@@ -60,9 +64,11 @@ def symmetric_basis(mesh: BeltMesh, matrices: list[sp.spmatrix], vectors: list[n
             if np.max(np.abs(m @ v - v)) > SYMMETRY_TOLERANCE * max(np.max(np.abs(v)), 1e-300):
                 return None
     eye = sp.identity(mesh.n_belt_dof, format="csr")
-    projector = 0.25 * (eye + mirrors[0]) @ (eye + mirrors[1])
+    projector = 0.5 * (eye + mirrors[0])
+    if fore_aft:
+        projector = 0.5 * projector @ (eye + mirrors[1])
     ns, ne = mesh.n_strips, mesh.n_elements
-    j, k = np.meshgrid(np.arange((ns + 1) // 2), np.arange(ne // 2 + 1), indexing="ij")
+    j, k = np.meshgrid(np.arange((ns + 1) // 2), np.arange(ne // 2 + 1 if fore_aft else ne), indexing="ij")
     reps = np.concatenate([mesh.dof(j, k, c).ravel() for c in (UX, UZ, PHI)])
     basis = projector[:, np.sort(reps)].tocsc()
     keep = np.diff(basis.indptr) > 0
