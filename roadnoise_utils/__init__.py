@@ -13,6 +13,8 @@ Public entry points (DESIGN section 6)::
     tire_F = ru.assemble_fixed_hub(fits)        # python-control StateSpace (A_F, B_F, C_F, D_F), Eq. 3-4
     u      = ru.cleat_input(static, speed=30/3.6)  # RoadInput: t, u[tassello, t] (the paper's cleat)
     force  = ru.simulate(tire_F, u)             # fast LTI simulation: hub force (N) vs time/distance
+    ru.write_uff58("frfs.uff", visco)           # every FRF (H_i, H_tot, G_H) as UFF 58; ru.read_uff58 reads it
+    road   = ru.road.load_crg("road.crg")       # an OpenCRG road (its modifiers explicit: ``modifiers=``)
     run    = ru.experiments.cleat_test("165_65R14")   # the paper's test, conditions resolved once
 
 The package, one folder per stage, data flowing one way:
@@ -35,6 +37,7 @@ from .repro.style import set_style
 from .response.frf import FRFResult, frf_visco
 from .response.modal_reduction import ModalReduction, identify_modes, modal_reduction
 from .response.modes import LoadedModes, loaded_modes
+from .response.uff import read_uff58, write_uff58
 from .rm.fitting import FitSet, RationalFit, fit_tasselli, vector_fit
 from .rm.realisation import assemble_fixed_hub, realize
 from .rm.simulation import SimulationResult, simulate
@@ -77,6 +80,7 @@ __all__ = [
     "load_tire",
     "loaded_modes",
     "modal_reduction",
+    "read_uff58",
     "realize",
     "response",
     "ring_check",
@@ -93,4 +97,5 @@ __all__ = [
     "tire",
     "vector_fit",
     "vehicle",
+    "write_uff58",
 ]

@@ -6,8 +6,11 @@ editable install in the repository (the normal case) and from anywhere else.
 
 from __future__ import annotations
 
+import contextlib
 import os
+import tempfile
 import tomllib
+from collections.abc import Iterator
 from pathlib import Path
 
 #: The repository root (the folder holding ``roadnoise_utils/`` and ``data/``).
@@ -50,6 +53,32 @@ def data_file(name: str | Path, folder: str, what: str) -> Path:
         return candidate
     available = sorted(p.stem for p in (data_dir() / folder).glob("*.toml"))
     raise FileNotFoundError(f"no {what} {str(name)!r}: give a path to a .toml file or one of {available}")
+
+
+@contextlib.contextmanager
+def atomic_output(path: str | Path, overwrite: bool = False, parameter: str = "path") -> Iterator[Path]:
+    """A temporary file beside ``path`` to write into; on success it replaces ``path`` (``os.replace``).
+
+    Nothing is written half-way: if the block raises, the temporary file is removed and ``path``
+    is left as it was. An existing ``path`` is refused unless ``overwrite`` (``FileExistsError``
+    naming ``parameter`` and the ``overwrite`` argument); a missing folder is refused before any work.
+    """
+    path = Path(path)
+    if path.is_dir():
+        raise IsADirectoryError(f"{parameter} = {str(path)!r} is a folder: give a file name")
+    if not path.parent.is_dir():
+        raise FileNotFoundError(f"{parameter} = {str(path)!r}: the folder {str(path.parent)!r} does not exist")
+    if path.exists() and not overwrite:
+        raise FileExistsError(f"{parameter} = {str(path)!r} exists: pass overwrite=True to replace it")
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    os.close(fd)
+    os.chmod(tmp, 0o644)  # mkstemp's 0600 would carry over to the result
+    try:
+        yield Path(tmp)
+        os.replace(tmp, path)
+    finally:
+        with contextlib.suppress(FileNotFoundError):
+            os.unlink(tmp)
 
 
 def read_toml(path: Path) -> dict:

@@ -7,6 +7,7 @@ paper Fig. 4-5). ``fe_reference`` holds the FE solves every RM-chain result is c
 The cross-section tire has its own: ``section_footprint`` (direct FRFs), ``section_modal`` (its
 modal reduction, loaded modes by component-mode synthesis) and ``section_one_sided`` (the
 quasi-static cleat passage with contact loss); ``one_sided`` is the ring's contact loss.
+``uff`` writes every FRF set of either tire to a UFF 58 file and reads it back.
 """
 
 from . import (
@@ -19,12 +20,14 @@ from . import (
     section_footprint,
     section_modal,
     section_one_sided,
+    uff,
 )
 from .fe_reference import fe_cleat_response, fe_moving_hub, fe_road_response
 from .frf import FRFResult, frf_visco
 from .loaded import LoadedTire, loaded_tire
 from .modal_reduction import ModalReduction, identify_modes
 from .modes import LoadedModes, loaded_modes
+from .uff import read_uff58, write_uff58
 
 __all__ = [
     "FRFResult",
@@ -44,7 +47,10 @@ __all__ = [
     "modal_reduction",
     "modes",
     "one_sided",
+    "read_uff58",
     "section_footprint",
     "section_modal",
     "section_one_sided",
+    "uff",
+    "write_uff58",
 ]

@@ -42,24 +42,41 @@ def load_road_file(path: str | Path) -> RoadProfile:
         raise ValueError(f"{path.name}: every row must be numbers separated by commas ({exc})") from None
     if data.shape[1] != len(header):
         raise ValueError(f"{path.name}: {data.shape[1]} columns but {len(header)} names in the header")
-    if not np.all(np.isfinite(data)):
-        raise ValueError(f"{path.name}: the road contains NaN or inf")
     s, z = data[:, 0], data[:, 1:].T
-    step = np.diff(s)
-    if s.size < 3 or np.any(step <= 0) or not np.allclose(step, step[0], rtol=1e-6):
-        raise ValueError(f"{path.name}: s must increase with a uniform step")
-    if step[0] > MIN_WAVELENGTH / 4:
-        raise ValueError(
-            f"{path.name}: step {step[0] * 1e3:.1f} mm is too coarse: valid range is <= "
-            f"{MIN_WAVELENGTH / 4 * 1e3:.1f} mm (4 samples per 5 cm)"
-        )
-    if np.max(np.abs(z)) > MAX_HEIGHT:
-        raise ValueError(
-            f"{path.name}: heights up to {np.max(np.abs(z)):g} m: valid range is [-{MAX_HEIGHT:g}, {MAX_HEIGHT:g}] m "
-            "(heights are in metres, not millimetres)"
-        )
-    check_lateral_positions(y)
+    check_road_grid(s, y, z, path.name)
     if np.unique(y).size != y.size:
         raise ValueError(f"{path.name}: two height columns at one lateral position: {header[1:]}")
     order = np.argsort(y)
     return RoadProfile(s=s, y=y[order], z=z[order], spectrum=None, seed=None, periodic=False)
+
+
+def check_road_grid(s: np.ndarray, y: np.ndarray, z: np.ndarray, source: str) -> None:
+    """Refuse a road the RM input cannot use: NaN or inf, a non-uniform or too coarse step, heights or
+    lateral positions out of range (errors name ``source``, the file).
+
+    Parameters
+    ----------
+    s : ndarray (n,)
+        Road coordinate (m): increasing with a uniform step of at most a quarter of the
+        shortest wavelength the tasselli resolve (5 cm, paper abstract): 12.5 mm.
+    y : ndarray (n_tracks,)
+        Lateral position of each track (m), within +/- 1 m.
+    z : ndarray (n_tracks, n)
+        Heights (m), within +/- 0.25 m.
+    """
+    if not (np.all(np.isfinite(s)) and np.all(np.isfinite(y)) and np.all(np.isfinite(z))):
+        raise ValueError(f"{source}: the road contains NaN or inf")
+    step = np.diff(s)
+    if s.size < 3 or np.any(step <= 0) or not np.allclose(step, step[0], rtol=1e-6):
+        raise ValueError(f"{source}: s must increase with a uniform step")
+    if step[0] > MIN_WAVELENGTH / 4 * (1 + 1e-9):
+        raise ValueError(
+            f"{source}: step {step[0] * 1e3:.1f} mm is too coarse: valid range is <= "
+            f"{MIN_WAVELENGTH / 4 * 1e3:.1f} mm (4 samples per 5 cm)"
+        )
+    if np.max(np.abs(z)) > MAX_HEIGHT:
+        raise ValueError(
+            f"{source}: heights up to {np.max(np.abs(z)):g} m: valid range is [-{MAX_HEIGHT:g}, {MAX_HEIGHT:g}] m "
+            "(heights are in metres, not millimetres)"
+        )
+    check_lateral_positions(y)

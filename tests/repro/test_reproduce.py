@@ -50,6 +50,20 @@ def test_readme_own_road_snippet(tire, fet, flat):
     assert force.size > 1000 and np.all(np.isfinite(force)) and np.std(force) > 0
 
 
+def test_readme_exchange_formats_snippet(flat, tmp_path, monkeypatch):
+    """The README's UFF 58 and OpenCRG walk, as written, on a CRG road of the rough texture."""
+    monkeypatch.chdir(tmp_path)
+    spectrum = ru.textures.load_texture("rough")
+    ru.road.save_crg("my_road.crg", ru.textures.generate_field(spectrum, 51.2, 0.005, np.array([-0.08, 0.0, 0.08]), 7))
+    snippet = README.split("**Exchange formats.**", 1)[1].split("```python", 1)[1].split("```", 1)[0]
+    namespace = {"ru": ru, "static": flat}
+    exec(compile(snippet, "README", "exec"), namespace)  # the README's code, as written
+    visco, back = namespace["visco"], namespace["back"]
+    assert back.H.shape == visco.H.shape and np.allclose(back.H, visco.H, rtol=1e-11, atol=0)
+    assert namespace["u"].u.shape[0] == flat.tasselli.n and np.std(namespace["u"].u) > 0
+    assert ru.road.crg_modifiers("rough.crg") == {} and (tmp_path / "165_65R14.uff").stat().st_size > 0
+
+
 def test_readme_own_car_snippet():
     """The README's whole-car walk, as written (10 s at 120 km/h, four corners): every output's spectrum
     and the axles' coherence come back finite."""
