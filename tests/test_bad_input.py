@@ -415,3 +415,24 @@ def test_reproduce_names_a_missing_notebook_folder(tmp_path, capsys):
     with pytest.raises(SystemExit):
         reproduce.main(["--notebooks", str(tmp_path / "nowhere")])
     assert "missing" in capsys.readouterr().err
+
+
+def test_chunked_checks_find_what_the_whole_array_check_finds():
+    """guards.all_finite / uniform_step in chunks far smaller than the array: a NaN or an infinity anywhere
+    (the last element, a non-contiguous view, a complex part) and a step off by more than 1e-9 are found."""
+    from roadnoise_utils import guards
+
+    values = np.zeros((3, 1001))
+    assert guards.all_finite(values, chunk=64) and guards.all_finite(values[:, ::7], chunk=5)
+    for bad in (np.nan, np.inf, -np.inf):
+        spoiled = values.copy()
+        spoiled[-1, -1] = bad
+        assert not guards.all_finite(spoiled, chunk=64) and not guards.all_finite(spoiled[:, ::-1], chunk=5)
+        imaginary = np.zeros(spoiled.shape, complex)
+        imaginary.imag = spoiled
+        assert not guards.all_finite(imaginary, chunk=64)
+    t = 0.01 * np.arange(5000)
+    assert guards.uniform_step(t, chunk=100) == pytest.approx(0.01)
+    t[-1] += 1e-6
+    with pytest.raises(ValueError, match="time step"):
+        guards.uniform_step(t, chunk=100)

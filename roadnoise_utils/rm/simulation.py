@@ -202,12 +202,9 @@ def _check_inputs(u: np.ndarray, t: np.ndarray, n_inputs: int) -> float:
         raise ValueError(f"input has {u.shape[0]} rows; the model has {n_inputs} inputs")
     if u.shape[1] != t.size or t.size < 2:
         raise ValueError("inputs need one column per time sample, at least two samples")
-    if not np.all(np.isfinite(u)):
+    if not guards.all_finite(u):
         raise ValueError("input contains NaN or inf")
-    dt = float(t[1] - t[0])
-    if not (dt > 0 and np.allclose(np.diff(t), dt, rtol=1e-9, atol=0)):
-        raise ValueError("time step must be uniform and positive")
-    return dt
+    return guards.uniform_step(t)
 
 
 def simulate(system: control.StateSpace | ModalSections, road: RoadInput) -> SimulationResult:
@@ -224,7 +221,9 @@ def simulate(system: control.StateSpace | ModalSections, road: RoadInput) -> Sim
     Notes
     -----
     Zero initial state; the input varies linearly between samples (FOH), exactly as
-    python-control's ``forced_response``.
+    python-control's ``forced_response``. For a road flowing through the footprint,
+    :func:`.aggregated.road_hub_force` gives the same force from the road itself, without forming
+    the inputs (~30x faster and ~25x less memory at 2e6 samples; README "Performance").
     """
     if not isinstance(road, RoadInput):
         raise ValueError(f"road must be a RoadInput (t, u[input, sample]), got {type(road).__name__}")

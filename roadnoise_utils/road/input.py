@@ -153,11 +153,17 @@ class RoadGrid:
     n_grid: int
     step: float
     oversample: int
-    s: np.ndarray
+    s_start: float
+    n_fine: int
     parts: list
     lateral: bool
     profile: object
     strip_y: np.ndarray
+
+    @property
+    def s(self) -> np.ndarray:
+        """Road coordinates of the fine grid (m), ``n_fine`` of them from ``s_start`` every ``step``."""
+        return self.s_start + self.step * np.arange(self.n_fine)
 
     @property
     def on_time_steps(self) -> bool:
@@ -167,12 +173,28 @@ class RoadGrid:
     def tracks(self):
         """Yields ``(parts, heights)``: each track's heights on ``s`` (m) with the strip parts
         ``[(strip, rows, kernels)]`` that see it (one track for a 2-D road, one per strip for a 3-D one)."""
+        for parts, heights in self.track_heights():
+            yield parts, heights(0, self.n_fine)
+
+    def track_heights(self):
+        """Yields ``(parts, heights)`` as :meth:`tracks`, ``heights(lo, hi)`` the track's heights (m) at the fine
+        grid's points ``lo .. hi - 1`` (zero outside the grid), evaluated and checked on demand: a long road in pieces."""
         if not self.lateral:
-            yield self.parts, _heights(self.profile, self.s)
+            yield self.parts, self._heights_of(self.profile)
             return
         for part in self.parts:
             strip = part[0]
-            yield [part], _heights(lambda ss, y=self.strip_y[strip]: self.profile(ss, y), self.s)
+            yield [part], self._heights_of(lambda ss, y=self.strip_y[strip]: self.profile(ss, y))
+
+    def _heights_of(self, profile):
+        def heights(lo: int, hi: int) -> np.ndarray:
+            out = np.zeros(hi - lo)
+            a, b = max(lo, 0), min(hi, self.n_fine)
+            if b > a:
+                out[a - lo : b - lo] = _heights(profile, self.s_start + self.step * np.arange(a, b))
+            return out
+
+        return heights
 
 
 def road_grid(
@@ -213,7 +235,6 @@ def road_grid(
     t = dt * np.arange(n)
     parts, x0 = strip_kernels(static.tasselli, step)
     n_x = parts[0][2].shape[1]
-    s = x0 + d0 + step * np.arange(n_x + (n_grid - 1) * oversample)
     return RoadGrid(
         t=t,
         distance=d0 + speed * t,
@@ -222,7 +243,8 @@ def road_grid(
         n_grid=n_grid,
         step=step,
         oversample=oversample,
-        s=s,
+        s_start=float(x0 + d0),
+        n_fine=n_x + (n_grid - 1) * oversample,
         parts=parts,
         lateral=_takes_lateral(profile),
         profile=profile,
@@ -297,12 +319,15 @@ def _heights(profile, s: np.ndarray) -> np.ndarray:
     z = np.asarray(profile(s))
     if np.iscomplexobj(z):
         raise ValueError("the road profile returned complex heights: heights are real numbers (m)")
-    z = z.astype(float)
-    if z.shape != s.shape or not np.all(np.isfinite(z)):
+    z = np.asarray(z, dtype=float)  # no copy of a float array
+    if z.shape != s.shape:
         raise ValueError("the road profile must return finite heights, one per road coordinate")
-    if np.max(np.abs(z)) > MAX_HEIGHT:
+    if not guards.all_finite(z):  # in chunks: no temporary as large as the road
+        raise ValueError("the road profile must return finite heights, one per road coordinate")
+    highest = max(-float(z.min(initial=0.0)), float(z.max(initial=0.0)))
+    if highest > MAX_HEIGHT:
         raise ValueError(
-            f"road heights up to {np.max(np.abs(z)):g} m: valid range is [-{MAX_HEIGHT:g}, {MAX_HEIGHT:g}] m "
+            f"road heights up to {highest:g} m: valid range is [-{MAX_HEIGHT:g}, {MAX_HEIGHT:g}] m "
             "(heights are in metres, not millimetres)"
         )
     return z

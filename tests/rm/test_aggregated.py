@@ -70,3 +70,27 @@ def test_a_crawling_road_is_refused_before_allocating(tire):
     static, sections = tire
     with pytest.raises(ResourceLimitError, match="speed and distance: the aggregated simulation"):
         aggregated.road_hub_force(sections, static, lambda s: 0.0 * s, 1e-6, (0.0, 0.6))
+
+
+def test_many_blocks_read_the_road_once(tire, monkeypatch):
+    """Overlap-save blocks far shorter than the record (forced small) give the same force, and every point of
+    the fine road grid is read once (the start's few points twice): the memory does not grow with the road."""
+    static, sections = tire
+    x, z = _rough(4)
+    read = []
+
+    def profile(s):
+        read.append(s.size)
+        return np.interp(s, x, z)
+
+    speed = 60 / 3.6
+    reference = aggregated.road_hub_force(sections, static, profile, speed, (0.0, 30.0), 9600.0)
+    one_block = sum(read)
+    monkeypatch.setattr(aggregated, "block_size", lambda kernel: kernel + 997)  # ~18 blocks
+    read.clear()
+    blocks = aggregated.road_hub_force(sections, static, profile, speed, (0.0, 30.0), 9600.0)
+    assert len(read) > 10 and sum(read) == one_block
+    where = ru.road.input.road_grid(static, profile, speed, (0.0, 30.0), 9600.0)
+    width = -(-where.parts[0][2].shape[1] // where.oversample)
+    assert one_block == where.n_fine + where.oversample * width
+    assert np.abs(blocks.force - reference.force).max() < 1e-12 * np.abs(reference.force).max()
