@@ -9,7 +9,7 @@ Public entry points (DESIGN section 6)::
     freqs  = ru.stages.DEFAULT_FREQS            # 0-400 Hz every 1 Hz
     visco  = ru.frf_visco(fet, static, freqs)   # direct FRFs: H_tot, H_i, G_H (fixed hub)
     reduced = ru.modal_reduction(fet, static, visco=visco)  # damping id., frozen modes, modal H_i
-    fits   = ru.fit_tasselli(visco.freqs, visco.H, n_poles=14)  # one rational fit per tassello (Eq. 1)
+    fits   = ru.fit_tasselli(visco.freqs, visco.H, n_poles=14, f_max=250.0)  # one fit per tassello (Eq. 1), 0-250 Hz
     tire_F = ru.assemble_fixed_hub(fits)        # python-control StateSpace (A_F, B_F, C_F, D_F), Eq. 3-4
     u      = ru.cleat_input(static, speed=30/3.6)  # RoadInput: t, u[tassello, t] (the paper's cleat)
     force  = ru.simulate(tire_F, u)             # fast LTI simulation: hub force (N) vs time/distance

@@ -12,13 +12,19 @@ pole-residue form,
 * Gustavsen & Semlyen, "Rational approximation of frequency domain responses by vector
   fitting", IEEE Trans. Power Delivery 14(3), 1999 — pole relocation by a linear problem;
 * Gustavsen, "Improving the pole relocating properties of vector fitting", IEEE Trans. Power
-  Delivery 21(3), 2006 — the relaxed non-triviality constraint used here.
+  Delivery 21(3), 2006 — the relaxed non-triviality constraint used here;
+* Deschrijver, Mrozowski, Dhaene & De Zutter, "Macromodeling of multiport systems using a fast
+  implementation of the vector fitting method", IEEE Microwave Wireless Compon. Lett. 18(6),
+  2008 — one pole set for many responses (``common_poles=True``, :mod:`.common_poles`).
 
-Options: model order (``n_poles``, default 8), weighting, number of iterations. Poles are
-kept stable (unstable ones are reflected), the coefficients real (complex poles come in
-conjugate pairs, handled with the real basis of Gustavsen 1999), and the DC value is imposed
-exactly when the data contain 0 Hz. Frequencies are scaled by the band's top frequency so the
-linear problems stay well conditioned.
+Options: model order (``n_poles``, default 8, or ``"auto"``: the lowest even order reaching a
+target error), weighting, number of iterations, one pole set per tassello or one for all. Each
+pole relocation is followed by the residues' least-squares solve, and the iteration with the
+smallest error is kept, not the last (relocation is not monotone: poles the data do not pin
+down can wander and worsen the fit). Poles are kept stable (unstable ones are reflected), the
+coefficients real (complex poles come in conjugate pairs, handled with the real basis of
+Gustavsen 1999), and the DC value is imposed exactly when the data contain 0 Hz. Frequencies
+are scaled by the band's top frequency so the linear problems stay well conditioned.
 """
 
 from __future__ import annotations
@@ -32,6 +38,18 @@ from threadpoolctl import threadpool_limits
 
 from .. import guards
 from ..analysis import relative_rms_error
+from . import common_poles as common
+from .vf_kernels import (
+    as_arrays,
+    check_data,
+    conjugate_closed,
+    errors_for_poles,
+    fit_for_poles,
+    initial_poles,
+    relocate,
+    split_poles,
+)
+from .vf_kernels import weights as resolve_weights
 
 
 @dataclass(frozen=True)
@@ -54,7 +72,17 @@ class RationalFit:
     dc_error : float
         :math:`|G(0) - H(0)|/|H(0)|` when 0 Hz was fitted, else NaN (-).
     iterations : int
-        Pole-relocation iterations used.
+        Pole relocations run (at most the ``iterations`` asked for; fewer when the poles
+        stopped moving by ``tolerance``).
+    best_iteration : int
+        The relocation whose poles are kept (0: the starting poles): the one with the smallest
+        error in :attr:`errors`.
+    errors : tuple of float
+        The selection error after 0, 1, ..., :attr:`iterations` relocations: the weighted
+        relative RMS error :math:`\\|w (G - H)\\|/\\|w H\\|` of the residues' least-squares fit
+        on those poles (with the default uniform weight, :attr:`rms_error`). For a common-pole
+        fit, this tassello's errors; the kept iteration is the one with the smallest worst
+        tassello's error.
     """
 
     poles: np.ndarray
@@ -64,6 +92,8 @@ class RationalFit:
     max_error: float
     dc_error: float
     iterations: int
+    best_iteration: int = 0
+    errors: tuple[float, ...] = ()
 
     @property
     def order(self) -> int:
@@ -93,18 +123,27 @@ class FitSet:
     band : tuple of float
         First and last fitted frequency (Hz).
     seconds : float
-        Wall time of the fits (s).
+        Wall time of the fits (s); with ``n_poles="auto"``, of the whole order search.
+    common_poles : bool
+        Every fit has the same poles (``fit_tasselli(..., common_poles=True)``): the state
+        space shares one state matrix (:func:`.realisation.assemble_fixed_hub`).
     """
 
     fits: list[RationalFit]
     freqs: np.ndarray
     band: tuple[float, float]
     seconds: float
+    common_poles: bool = False
 
     @property
     def n_poles(self) -> int:
         """Model order (the same for every fit)."""
         return self.fits[0].order
+
+    @property
+    def n_states(self) -> int:
+        """States of the fixed-hub state space (Eq. 3): one per pole, shared when the poles are common."""
+        return self.n_poles if self.common_poles else sum(f.order for f in self.fits)
 
     def __len__(self) -> int:
         return len(self.fits)
@@ -121,7 +160,7 @@ class FitSet:
         return np.array([f.rms_error for f in self.fits])
 
     def table(self) -> pd.DataFrame:
-        """One row per fit: order, errors, iterations, slowest pole's damping."""
+        """One row per fit: order, errors, iterations run and kept, slowest pole's damping."""
         return pd.DataFrame(
             {
                 "poles": [f.order for f in self.fits],
@@ -129,6 +168,7 @@ class FitSet:
                 "max error": [f.max_error for f in self.fits],
                 "DC error": [f.dc_error for f in self.fits],
                 "iterations": [f.iterations for f in self.fits],
+                "best iteration": [f.best_iteration for f in self.fits],
                 "max Re(p) (1/s)": [float(np.max(f.poles.real)) for f in self.fits],
             },
             index=pd.Index(np.arange(1, len(self.fits) + 1), name="tassello"),
@@ -138,6 +178,10 @@ class FitSet:
 #: BLAS threads inside the fits: their batched solves are small, and on 2 cores a second BLAS
 #: thread only contends with the first (benchmarks/bench_fitting.py measures both).
 FIT_THREADS = 1
+#: Largest order tried by ``n_poles="auto"`` unless told (``max_poles``).
+AUTO_MAX_POLES = 24
+#: Target of ``n_poles="auto"`` unless told (``target_error``): every fit within 1 % relative RMS error.
+AUTO_TARGET_ERROR = 0.01
 
 
 def _check_options(n_poles: int, iterations: int, tolerance: float) -> int:
@@ -147,185 +191,23 @@ def _check_options(n_poles: int, iterations: int, tolerance: float) -> int:
     return guards.integer("n_poles", n_poles, 1, 200)
 
 
-def _check_data(freqs: np.ndarray, frf: np.ndarray, n_poles: int) -> None:
-    if freqs.ndim != 1 or frf.shape[-1] != freqs.size:
-        raise ValueError(f"frf must have the frequencies on its last axis ({freqs.size}), got shape {frf.shape}")
-    if not np.all(np.isfinite(freqs)) or np.any(freqs < 0):
-        raise ValueError("freqs must be finite and >= 0 Hz")
-    if not np.all(np.diff(freqs) > 0):
-        raise ValueError("freqs must be strictly increasing")
-    if not np.all(np.isfinite(frf)):
-        raise ValueError("frf contains NaN or inf")
-    zero = np.nonzero(np.max(np.abs(frf), axis=-1) == 0)[0]
-    if zero.size:
-        raise ValueError(f"frf row(s) {zero.tolist()} are zero at every frequency: there is nothing to fit")
-    unknowns = n_poles + 1
-    if 2 * freqs.size < 2 * unknowns + 1:
-        raise ValueError(
-            f"{freqs.size} frequencies give {2 * freqs.size} real equations, fewer than the "
-            f"{2 * unknowns + 1} needed for {n_poles} poles; give at least {unknowns + 1} frequencies"
-        )
-
-
-def _initial_poles(n_poles: int) -> np.ndarray:
-    """Lightly damped complex pairs spread over the (scaled) band, one real pole if n is odd."""
-    n_pairs = n_poles // 2
-    imag = np.linspace(1.0 / (n_pairs + 1), 1.0, n_pairs) if n_pairs else np.array([])
-    pairs = -0.01 * imag + 1j * imag
-    poles = np.concatenate([np.ravel(np.column_stack([pairs, pairs.conj()])), [-0.5] * (n_poles % 2)])
-    return poles.astype(complex)
-
-
-def _split(poles: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Real poles and the upper members of the complex pairs."""
-    tol = 1e-10 * max(1.0, np.max(np.abs(poles)))
-    real = poles[np.abs(poles.imag) <= tol].real
-    upper = poles[poles.imag > tol]
-    return real, upper
-
-
-def _basis(s: np.ndarray, real: np.ndarray, upper: np.ndarray) -> np.ndarray:
-    """Real-coefficient partial-fraction basis (Gustavsen & Semlyen 1999).
-
-    ``real`` (..., n_r) and ``upper`` (..., n_c) may carry leading batch dimensions; the result
-    is (..., n_s, n_r + 2 n_c) with the columns: real poles, then (phi1, phi2) of each pair.
-    """
-    sr = s[:, None]
-    cols = [1.0 / (sr - real[..., None, :])]
-    if upper.shape[-1]:
-        a = 1.0 / (sr - upper[..., None, :])
-        b = 1.0 / (sr - np.conj(upper)[..., None, :])
-        pair = np.stack([a + b, 1j * (a - b)], axis=-1)  # (..., n_s, n_c, 2)
-        cols.append(pair.reshape(*pair.shape[:-2], -1))
-    return np.concatenate(cols, axis=-1)
-
-
-def _state_matrices(real: np.ndarray, upper: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Real block-diagonal (A, b), batched, whose c (sI - A)^-1 b reproduces :func:`_basis`."""
-    batch = real.shape[:-1]
-    n_r, n_c = real.shape[-1], upper.shape[-1]
-    n = n_r + 2 * n_c
-    a = np.zeros((*batch, n, n))
-    b = np.zeros((*batch, n))
-    idx = np.arange(n_r)
-    a[..., idx, idx] = real
-    b[..., :n_r] = 1.0
-    k = n_r + 2 * np.arange(n_c)
-    a[..., k, k] = upper.real
-    a[..., k + 1, k + 1] = upper.real
-    a[..., k, k + 1] = upper.imag
-    a[..., k + 1, k] = -upper.imag
-    b[..., k] = 2.0
-    return a, b
-
-
-def _stack(m: np.ndarray) -> np.ndarray:
-    """Real and imaginary parts stacked along the row axis (-2)."""
-    return np.concatenate([m.real, m.imag], axis=-2)
-
-
-def _relocate(s: np.ndarray, h: np.ndarray, w: np.ndarray, real: np.ndarray, upper: np.ndarray) -> np.ndarray:
-    """One relaxed pole relocation (Gustavsen 2006) for a batch of fits with the same pole structure.
-
-    ``h``, ``w``: (G, n_s); ``real`` (G, n_r), ``upper`` (G, n_c). Returns the zeros of each
-    fitted sigma(s), stabilised: (G, n) complex.
-    """
-    g, n_s = h.shape
-    n_r, n_c = real.shape[-1], upper.shape[-1]
-    n = n_r + 2 * n_c
-    # the design matrix [phi w, w, -phi h w, -h w], written in place (this step is memory-bound)
-    z = np.empty((g, n_s, 2 * n + 2), complex)
-    sr = s[None, :, None]
-    z[..., :n_r] = 1.0 / (sr - real[:, None, :])
-    if n_c:
-        a = 1.0 / (sr - upper[:, None, :])
-        b = 1.0 / (sr - np.conj(upper)[:, None, :])
-        z[..., n_r:n:2] = a + b
-        z[..., n_r + 1 : n : 2] = 1j * (a - b)
-    z[..., n] = 1.0
-    column_sum = z[..., : n + 1].sum(axis=1)
-    z[..., n + 1 :] = z[..., : n + 1] * (-(h * w))[..., None]
-    z[..., : n + 1] *= w[..., None]
-    # relaxation: Re(sum_k sigma(s_k)) = N, scaled like the data rows
-    scale = np.linalg.norm(h * w, axis=-1) / n_s
-    relax = np.zeros((g, z.shape[-1]))
-    relax[:, n + 1 :] = scale[:, None] * np.real(column_sum)
-    # normal equations of the stacked real system [Re z; Im z; relax] x = [0; 0; scale N]:
-    # Re(z^H z) + relax relax^T (ten times faster than QR/SVD on these tall, narrow systems and
-    # accurate enough for the iterative relocation; the final residues use an SVD solve)
-    normal = np.real(np.swapaxes(z.conj(), 1, 2) @ z) + relax[:, :, None] * relax[:, None, :]
-    rhs = relax * (scale * n_s)[:, None]
-    col = np.sqrt(np.diagonal(normal, axis1=1, axis2=2)).copy()
-    col[col == 0] = 1.0
-    x = _solve_normal(normal / (col[:, :, None] * col[:, None, :]), rhs / col) / col
-    c_sigma, d_sigma = x[:, n + 1 : 2 * n + 1], x[:, 2 * n + 1]
-    d_sigma = np.where(np.abs(d_sigma) < 1e-8, np.where(d_sigma >= 0, 1e-8, -1e-8), d_sigma)
-    a, b = _state_matrices(real, upper)
-    zeros = np.linalg.eigvals(a - b[..., :, None] * c_sigma[..., None, :] / d_sigma[:, None, None])
-    zeros = np.where(zeros.real > 0, -zeros.real + 1j * zeros.imag, zeros)  # enforce stability
-    tiny = np.abs(zeros.real) < 1e-6 * np.abs(zeros)
-    return np.where(tiny, -1e-6 * np.abs(zeros) + 1j * zeros.imag, zeros)
-
-
-def _solve_normal(matrix: np.ndarray, rhs: np.ndarray) -> np.ndarray:
-    """Solutions of a batch of normal equations (G, m, m) x = (G, m); a singular one by least squares.
-
-    A starting pole set with coinciding columns makes a relocation's normal matrix exactly
-    singular in some BLAS builds (seen with OpenBLAS's Haswell kernels on one thread): its
-    minimum-norm least-squares solution relocates the poles as well.
-    """
-    try:
-        return np.linalg.solve(matrix, rhs[..., None])[..., 0]
-    except np.linalg.LinAlgError:
-        return np.stack([np.linalg.lstsq(m, r, rcond=None)[0] for m, r in zip(matrix, rhs)])
-
-
-def _residues(s: np.ndarray, h: np.ndarray, w: np.ndarray, poles: np.ndarray, dc: complex | None):
-    """Real-coefficient residues and direct term for fixed poles, with the DC value imposed if given."""
-    real, upper = _split(poles)
-    phi = _basis(s, real, upper)
-    if dc is None:
-        design = np.concatenate([phi, np.ones((s.size, 1))], axis=1)
-        target = h
-    else:
-        phi0 = _basis(np.zeros(1), real, upper)[0]
-        design = phi - phi0[None, :]
-        target = h - dc
-    system = _stack(design * w[:, None])
-    col = np.linalg.norm(system, axis=0)
-    col[col == 0] = 1.0
-    coef = np.linalg.lstsq(system / col, _stack((target * w)[:, None])[:, 0], rcond=None)[0] / col
-    if dc is None:
-        c, d = coef[:-1], coef[-1]
-    else:
-        c, d = coef, float(np.real(dc - phi0 @ coef))
-    pair = c[real.size :].reshape(-1, 2)
-    upper_res = pair[:, 0] + 1j * pair[:, 1]
-    residues = np.concatenate(
-        [c[: real.size].astype(complex), np.ravel(np.column_stack([upper_res, upper_res.conj()]))]
+def _make_fit(
+    freqs: np.ndarray, h: np.ndarray, scale: float, model: tuple, used: int, best: int, errors: list[float]
+) -> RationalFit:
+    """A :class:`RationalFit` from a model ``(poles, residues, d, fitted, error)`` in scaled ``s``."""
+    p, r, d, fitted, _ = model
+    dc_error = abs(fitted[0] - h[0]) / abs(h[0]) if freqs[0] == 0.0 and h[0] != 0 else float("nan")
+    return RationalFit(
+        poles=p * scale,
+        residues=r * scale,
+        direct=d,
+        rms_error=relative_rms_error(fitted, h),
+        max_error=float(np.max(np.abs(fitted - h)) / np.max(np.abs(h))),
+        dc_error=float(dc_error),
+        iterations=int(used),
+        best_iteration=int(best),
+        errors=tuple(float(e) for e in errors),
     )
-    ordered_poles = np.concatenate([real.astype(complex), np.ravel(np.column_stack([upper, upper.conj()]))])
-    return ordered_poles, residues, float(np.real(d))
-
-
-def _weights(freqs: np.ndarray, frf: np.ndarray, weight: np.ndarray | str) -> np.ndarray:
-    if isinstance(weight, str):
-        if weight not in ("uniform", "relative"):
-            raise ValueError(f"weight = {weight!r}: valid values are 'uniform', 'relative' or an array")
-        if weight == "uniform":
-            return np.ones(frf.shape)
-        mag = np.abs(frf)
-        return 1.0 / np.maximum(mag, 1e-12 * mag.max(axis=-1, keepdims=True))
-    try:
-        w = np.broadcast_to(np.asarray(weight, float), frf.shape)
-    except ValueError:
-        raise ValueError(
-            f"weight of shape {np.shape(weight)}: give one weight per frequency ({frf.shape[-1]}) or per FRF value "
-            f"{frf.shape}"
-        ) from None
-    if np.any(w < 0) or not np.all(np.isfinite(w)):
-        raise ValueError("weight must be finite, >= 0 and one per frequency")
-    return w
 
 
 def _fit_many(
@@ -337,26 +219,35 @@ def _fit_many(
     tolerance: float,
     enforce_dc: bool,
 ) -> list[RationalFit]:
-    """Relaxed vector fitting of each row of ``frf`` (own poles per row), batched over rows."""
+    """Relaxed vector fitting of each row of ``frf`` (own poles per row), batched over rows.
+
+    After every relocation each row's residues are solved and its error recorded; each row keeps
+    the poles of its smallest error (ties: the earlier iteration).
+    """
     n_poles = _check_options(n_poles, iterations, tolerance)
-    _check_data(freqs, frf, n_poles)
+    check_data(freqs, frf, n_poles)
     scale = 2 * np.pi * freqs[-1]
     s = 2j * np.pi * freqs / scale
-    w = _weights(freqs, frf, weight)
+    w = resolve_weights(freqs, frf, weight)
     m = frf.shape[0]
-    poles = np.tile(_initial_poles(n_poles), (m, 1))
+    dc = frf[:, 0] if (enforce_dc and freqs[0] == 0.0) else None
+    poles = np.tile(initial_poles(n_poles), (m, 1))
+    real, upper = split_poles(poles[0])
+    errors = [[e] for e in errors_for_poles(s, frf, w, np.tile(real, (m, 1)), np.tile(upper, (m, 1)), dc)]
+    best_poles, best_it = poles.copy(), np.zeros(m, int)
     used = np.zeros(m, int)
     active = np.ones(m, bool)
     for it in range(1, iterations + 1):
-        splits = [_split(p) for p in poles]
+        splits = [split_poles(p) for p in poles]
         structure = np.array([r.size for r, _ in splits])
         new = poles.copy()
         for n_r in np.unique(structure[active]):
             rows = np.nonzero(active & (structure == n_r))[0]
             real = np.array([splits[i][0] for i in rows]).reshape(rows.size, n_r)
             upper = np.array([splits[i][1] for i in rows]).reshape(rows.size, (n_poles - n_r) // 2)
-            zeros = _relocate(s, frf[rows], w[rows], real, upper)
-            new[rows] = [_conjugate_closed(z) for z in zeros]
+            zeros = relocate(s, frf[rows], w[rows], real, upper)
+            new[rows] = [conjugate_closed(z) for z in zeros]
+        _record(s, frf, w, dc, new, np.nonzero(active)[0], it, errors, best_poles, best_it)
         moved = np.max(np.abs(np.sort_complex(new) - np.sort_complex(poles)), axis=1) / np.max(np.abs(poles), axis=1)
         poles = new
         used[active] = it
@@ -365,32 +256,48 @@ def _fit_many(
             break
     fits = []
     for i in range(m):
-        dc = frf[i, 0] if (enforce_dc and freqs[0] == 0.0) else None
-        p, r, d = _residues(s, frf[i], w[i], poles[i], dc)
-        fitted = (r[None, :] / (s[:, None] - p[None, :])).sum(axis=1) + d
-        dc_error = abs(fitted[0] - frf[i, 0]) / abs(frf[i, 0]) if freqs[0] == 0.0 and frf[i, 0] != 0 else float("nan")
-        fits.append(
-            RationalFit(
-                poles=p * scale,
-                residues=r * scale,
-                direct=d,
-                rms_error=relative_rms_error(fitted, frf[i]),
-                max_error=float(np.max(np.abs(fitted - frf[i])) / np.max(np.abs(frf[i]))),
-                dc_error=float(dc_error),
-                iterations=int(used[i]),
-            )
-        )
+        model = fit_for_poles(s, frf[i], w[i], best_poles[i], None if dc is None else dc[i])
+        errors[i][best_it[i]] = model[4]  # the kept poles' error from the final (SVD) solve
+        fits.append(_make_fit(freqs, frf[i], scale, model, used[i], best_it[i], errors[i]))
     return fits
 
 
-def _conjugate_closed(zeros: np.ndarray) -> np.ndarray:
-    """The zeros of a real sigma(s) as real poles + exact conjugate pairs (round-off removed)."""
-    real, upper = _split(zeros)
-    n_pairs = (zeros.size - real.size) // 2
-    if upper.size != n_pairs:  # round-off split a pair unevenly: keep the n_pairs most complex ones
-        upper = upper[np.argsort(-np.abs(upper.imag))][:n_pairs]
-        real = np.sort(zeros.real[np.argsort(np.abs(zeros.imag))][: zeros.size - 2 * n_pairs])
-    return np.concatenate([real.astype(complex), np.ravel(np.column_stack([upper, upper.conj()]))])
+def _record(s, frf, w, dc, new, rows, it, errors, best_poles, best_it) -> None:
+    """Errors of the relocated poles ``new`` of ``rows`` (batched by pole structure); keep each row's best."""
+    splits = {i: split_poles(new[i]) for i in rows}
+    structure = np.array([splits[i][0].size for i in rows], int)
+    for n_r in np.unique(structure):
+        group = rows[structure == n_r]
+        real = np.array([splits[i][0] for i in group]).reshape(group.size, n_r)
+        upper = np.array([splits[i][1] for i in group]).reshape(group.size, (new.shape[1] - n_r) // 2)
+        found = errors_for_poles(s, frf[group], w[group], real, upper, None if dc is None else dc[group])
+        for i, e in zip(group, found):
+            if e < min(errors[i]):
+                best_poles[i], best_it[i] = new[i], it
+            errors[i].append(float(e))
+
+
+def _fit_common(
+    freqs: np.ndarray,
+    frf: np.ndarray,
+    n_poles: int,
+    weight: np.ndarray | str,
+    iterations: int,
+    tolerance: float,
+    enforce_dc: bool,
+) -> list[RationalFit]:
+    """One pole set for every row of ``frf`` (:func:`.common_poles.fit_common`), per-row residues."""
+    n_poles = _check_options(n_poles, iterations, tolerance)
+    check_data(freqs, frf, n_poles)
+    scale = 2 * np.pi * freqs[-1]
+    s = 2j * np.pi * freqs / scale
+    w = resolve_weights(freqs, frf, weight)
+    dc = frf[:, 0] if (enforce_dc and freqs[0] == 0.0) else None
+    found = common.fit_common(s, frf, w, n_poles, iterations, tolerance, dc)
+    return [
+        _make_fit(freqs, frf[i], scale, found.models[i], found.iterations, found.best_iteration, found.errors[i])
+        for i in range(frf.shape[0])
+    ]
 
 
 def vector_fit(
@@ -402,7 +309,7 @@ def vector_fit(
     tolerance: float = 1e-3,
     enforce_dc: bool = True,
 ) -> RationalFit:
-    """Fit one FRF with ``n_poles`` stable poles and a direct term (biproper).
+    """Fit one FRF with ``n_poles`` stable poles and a direct term (biproper, paper Eq. 1).
 
     Parameters
     ----------
@@ -417,43 +324,39 @@ def vector_fit(
         everywhere), ``"uniform"`` (default) minimises the absolute error, i.e. the relative
         RMS error reported.
     iterations : int
-        Maximum pole relocations (default 8; vector fitting usually converges in 3-5, and more
-        iterations let poles that the data do not pin down wander without improving the fit).
+        Maximum pole relocations (default 8; vector fitting usually converges in 3-5). The
+        relocation with the smallest weighted relative RMS error is kept
+        (:attr:`RationalFit.best_iteration`), not the last.
     tolerance : float
         Stop a fit when its poles move less than this relative to the largest pole (default
         1e-3: well converged poles keep drifting far below any visible change of the fit).
     enforce_dc : bool
         Impose ``G(0) = frf(0)`` exactly when ``freqs[0] == 0`` (the static influence).
     """
-    freqs, frf = _as_arrays(freqs, frf)
+    freqs, frf = as_arrays(freqs, frf)
     if frf.ndim != 1:
         raise ValueError(f"frf must be 1-D (one FRF; fit_tasselli fits one per row), got shape {frf.shape}")
     return _fit_many(freqs, frf[None, :], n_poles, weight, iterations, tolerance, enforce_dc)[0]
 
 
-def _as_arrays(freqs, frf) -> tuple[np.ndarray, np.ndarray]:
-    """Frequencies (float) and FRFs (complex) as arrays, or a ValueError naming the one that is not numeric."""
-    for name, value, dtype in (("freqs", freqs, float), ("frf", frf, complex)):
-        try:
-            np.asarray(value, dtype)
-        except (TypeError, ValueError):
-            raise ValueError(f"{name} must be numbers ({'real' if dtype is float else 'complex'})") from None
-    return np.asarray(freqs, float), np.asarray(frf, complex)
-
-
 def fit_tasselli(
     freqs: np.ndarray,
     H: np.ndarray,
-    n_poles: int = 8,
-    f_max: float | None = 250.0,
+    n_poles: int | str = 8,
+    f_max: float | None = None,
     weight: np.ndarray | str = "uniform",
     iterations: int = 8,
     tolerance: float = 1e-3,
     enforce_dc: bool = True,
+    common_poles: bool = False,
+    target_error: float | None = None,
+    max_poles: int = AUTO_MAX_POLES,
 ) -> FitSet:
     """One rational fit per row of ``H`` [tassello, frequency] over ``0-f_max`` Hz (paper Eq. 1).
 
-    Each row gets its own poles; the pole relocations of all rows run batched.
+    Each row gets its own poles (the pole relocations of all rows run batched), or, with
+    ``common_poles=True``, all rows share one pole set and each has its own residues and direct
+    term: a state space of ``n_poles`` states in all instead of ``n_poles`` per tassello.
 
     Parameters
     ----------
@@ -461,14 +364,26 @@ def fit_tasselli(
         Frequencies (Hz) of the columns of ``H``.
     H : ndarray (n_fits, n_freq) or (n_freq,), complex
         The FRFs (N/m).
-    n_poles : int
-        Poles (= zeros) per fit; the paper's 8 by default.
+    n_poles : int or "auto"
+        Poles (= zeros) per fit; the paper's 8 by default. ``"auto"``: the lowest even order
+        from 2 to ``max_poles`` at which the largest relative RMS error over the rows
+        (:attr:`FitSet.rms_errors`) is at most ``target_error``; when none gets there, the
+        order with the smallest largest error, with a
+        :class:`~roadnoise_utils.guards.RoadnoiseWarning` naming it.
     f_max : float or None
-        Top of the fitted band (Hz); paper: 250 Hz. ``None`` fits all frequencies.
+        Top of the fitted band (Hz). ``None`` (default) fits all the data's frequencies; the
+        paper's band is 0-250 Hz (``f_max=250.0``).
     weight, iterations, tolerance, enforce_dc
         As in :func:`vector_fit`.
+    common_poles : bool
+        One pole set for all rows (fast relaxed vector fitting, :mod:`.common_poles`); the
+        kept iteration is the one with the smallest worst row's error.
+    target_error : float, optional
+        Target of ``n_poles="auto"`` (default :data:`AUTO_TARGET_ERROR`, 1 %); only with it.
+    max_poles : int
+        Largest order ``n_poles="auto"`` tries (default :data:`AUTO_MAX_POLES`).
     """
-    freqs, H = _as_arrays(freqs, H)
+    freqs, H = as_arrays(freqs, H)
     H = np.atleast_2d(H)
     if H.ndim != 2:
         raise ValueError(f"H must be 1-D or 2-D [fit, frequency], got shape {H.shape}")
@@ -476,7 +391,8 @@ def fit_tasselli(
         raise ValueError(f"H must have the frequencies on its last axis ({freqs.size}), got shape {H.shape}")
     if not np.all(np.isfinite(freqs)):
         raise ValueError("freqs must be finite (a NaN frequency is not dropped silently)")
-    _check_options(n_poles, iterations, tolerance)
+    orders, target = _orders(n_poles, target_error, max_poles)
+    _check_options(orders[0], iterations, tolerance)
     if f_max is not None:
         guards.real("f_max", f_max, 0.0, lo_open=True, unit="Hz")
     band = freqs <= f_max if f_max is not None else np.ones(freqs.size, bool)
@@ -484,13 +400,48 @@ def fit_tasselli(
         raise ValueError(f"no frequency below f_max = {f_max} Hz")
     if not isinstance(weight, str) and np.shape(weight)[-1:] != (freqs.size,):
         raise ValueError(f"weight of shape {np.shape(weight)}: give one weight per frequency ({freqs.size})")
+    if not isinstance(common_poles, (bool, np.bool_)):
+        raise ValueError(f"common_poles = {common_poles!r}: give True or False")
     w = weight if isinstance(weight, str) else np.asarray(weight, float)[..., band]
+    run = _fit_common if common_poles else _fit_many
     start = time.perf_counter()
+    tried: list[list[RationalFit]] = []
     with threadpool_limits(FIT_THREADS, user_api="blas"):  # small batched solves: threads only fight
-        fits = _fit_many(freqs[band], H[:, band], n_poles, w, iterations, tolerance, enforce_dc)
+        for n in orders:
+            if target is not None and 2 * int(band.sum()) < 2 * (n + 1) + 1:
+                break  # too few frequencies for this order (and the higher ones)
+            tried.append(run(freqs[band], H[:, band], n, w, iterations, tolerance, enforce_dc))
+            if target is not None and max(f.rms_error for f in tried[-1]) <= target:
+                break
+    fits = tried[-1] if tried else run(freqs[band], H[:, band], orders[0], w, iterations, tolerance, enforce_dc)
+    if target is not None and max(f.rms_error for f in fits) > target:
+        fits = min(tried, key=lambda t: max(f.rms_error for f in t))
+        worst = max(f.rms_error for f in fits)
+        guards.warn(
+            f"n_poles='auto': no even order up to {tried[-1][0].order} reaches target_error = {target:.3g} "
+            f"(largest relative RMS error); using {fits[0].order} poles, the smallest largest error ({worst:.3g}). "
+            f"Raise max_poles (now {max_poles}) or the target",
+            stacklevel=2,
+        )
     return FitSet(
         fits=fits,
         freqs=freqs[band],
         band=(float(freqs[band][0]), float(freqs[band][-1])),
         seconds=time.perf_counter() - start,
+        common_poles=bool(common_poles),
     )
+
+
+def _orders(n_poles: int | str, target_error: float | None, max_poles: int) -> tuple[list[int], float | None]:
+    """The orders to fit and the target error (None: one given order)."""
+    if isinstance(n_poles, str):
+        if n_poles != "auto":
+            raise ValueError(f"n_poles = {n_poles!r}: give an integer 1-200 or 'auto'")
+        target = (
+            AUTO_TARGET_ERROR if target_error is None else guards.real("target_error", target_error, 0.0, lo_open=True)
+        )
+        top = guards.integer("max_poles", max_poles, 2, 200)
+        return list(range(2, top + 1, 2)), target
+    if target_error is not None:
+        raise ValueError(f"target_error = {target_error!r} is used only with n_poles='auto' (n_poles = {n_poles!r})")
+    return [_check_options(n_poles, 1, 1.0)], None

@@ -11,9 +11,12 @@ from .fitting import FitSet, fit_tasselli
 
 
 def order_scan(
-    freqs: np.ndarray, H: np.ndarray, orders: range | list[int] = range(8, 19), f_max: float | None = 250.0, **options
+    freqs: np.ndarray, H: np.ndarray, orders: range | list[int] = range(8, 19), f_max: float | None = None, **options
 ) -> pd.DataFrame:
-    """Largest and median relative RMS error of :func:`fit_tasselli` for each model order."""
+    """Largest and median relative RMS error of :func:`fit_tasselli` for each model order.
+
+    ``f_max`` (Hz) the top of the fitted band, ``None`` (default) the data's; the paper's is 250 Hz.
+    """
     rows = []
     for n in orders:
         fits = fit_tasselli(freqs, H, n_poles=n, f_max=f_max, **options)
@@ -36,19 +39,21 @@ def lowest_order(
     H: np.ndarray,
     tolerance: float = 0.01,
     orders: range | list[int] | None = None,
-    f_max: float | None = 250.0,
+    f_max: float | None = None,
     strict: bool = True,
     **options,
 ) -> FitSet:
     """The fits at the lowest order whose every fit has relative RMS error below ``tolerance``.
 
-    ``orders`` default :func:`default_orders` of the band.
+    ``orders`` default :func:`default_orders` of the band; ``f_max`` (Hz) its top, ``None``
+    (default) the data's top frequency (the paper's band is 0-250 Hz). :func:`fit_tasselli` with
+    ``n_poles="auto"`` searches the even orders alone.
 
     When no order in ``orders`` gets there: ``strict`` raises ``ValueError``; otherwise the order
     with the smallest worst error is returned with a :class:`~roadnoise_utils.guards.RoadnoiseWarning`
     naming it (the chain then runs, the error stated).
     """
-    orders = default_orders(f_max) if orders is None else orders
+    orders = default_orders(float(np.max(freqs)) if f_max is None else f_max) if orders is None else orders
     best = None
     for n in orders:
         fits = fit_tasselli(freqs, H, n_poles=n, f_max=f_max, **options)

@@ -16,6 +16,14 @@ polynomials are hopelessly ill-conditioned): one 1x1 block per real pole
 which reproduces :math:`r/(s-p) + \\bar r/(s-\\bar p)` exactly. The whole tire (Eq. 3-4)
 stacks them block-diagonally: one input per tassello, the hub force as the output,
 :math:`F_F = \\sum_i F_i`. Everything is a python-control ``StateSpace``.
+
+Fits with one pole set for all tasselli (``fit_tasselli(..., common_poles=True)``) share their
+states instead: :math:`F_F = \\sum_k \\frac{1}{s-p_k}\\sum_i r_{ik} u_i + \\sum_i d_i u_i`, so
+:math:`A_F` is the modal matrix of the ``n`` poles (transposed blocks
+:math:`[\\sigma\\ -\\omega;\\ \\omega\\ \\sigma]`), :math:`B_F` holds the residues,
+:math:`[\\alpha_i\\ \\beta_i]^T` per pair and tassello, and :math:`C_F = [2\\ 0\\ \\dots]`:
+``n`` states in all instead of ``n`` per tassello (the transpose of the single-input
+realisation, the same transfer functions).
 """
 
 from __future__ import annotations
@@ -71,20 +79,43 @@ def assemble_fixed_hub(fits: FitSet | list[RationalFit]) -> control.StateSpace:
     control.StateSpace
         Inputs: the vertical displacement of each tassello (m), in tassello order; output: the
         vertical force on the hub (N), positive upward. States: 2 per conjugate pole pair,
-        1 per real pole, tassello after tassello (``x_F = [x_1; x_2; ...]``).
+        1 per real pole, tassello after tassello (``x_F = [x_1; x_2; ...]``); for a
+        :class:`~.fitting.FitSet` with ``common_poles``, one set shared by all tasselli
+        (:func:`shared_realisation`).
     """
     if not isinstance(fits, (FitSet, list, tuple)):
         raise TypeError(f"fits must be a FitSet or a list of RationalFit, got {type(fits).__name__}")
-    fits = list(fits)
+    source, fits = fits, list(fits)
     if not fits:
         raise ValueError("no fits to assemble")
     wrong = [type(f).__name__ for f in fits if not isinstance(f, RationalFit)]
     if wrong:
         raise TypeError(f"fits must hold RationalFit objects (ru.fit_tasselli), got {sorted(set(wrong))}")
+    if getattr(source, "common_poles", False):
+        return shared_realisation(fits)
     blocks = [real_blocks(f) for f in fits]
     a = sla.block_diag(*[blk[0] for blk in blocks])
     b = sla.block_diag(*[blk[1][:, None] for blk in blocks])
     c = np.concatenate([blk[2] for blk in blocks])[None, :]
+    d = np.array([[f.direct for f in fits]])
+    return control.ss(a, b, c, d)
+
+
+def shared_realisation(fits: list[RationalFit]) -> control.StateSpace:
+    """The fixed-hub tire (Eq. 3-4) of fits that share one pole set: ``n_poles`` states in all.
+
+    Per pole pair :math:`p = \\sigma + i\\omega` the block :math:`[\\sigma\\ -\\omega;\\ \\omega\\ \\sigma]`,
+    tassello ``i``'s input column :math:`[\\alpha_i;\\ \\beta_i]` (its residue
+    :math:`r_i = \\alpha_i + i\\beta_i`) and the output row :math:`[2\\ 0]`; per real pole
+    :math:`a = p`, :math:`b_i = r_i`, :math:`c = 1`. Raises ``ValueError`` if the poles differ.
+    """
+    first = fits[0].poles
+    if any(f.poles.shape != first.shape or not np.array_equal(f.poles, first) for f in fits):
+        raise ValueError("common_poles: every fit must have the same poles (fit_tasselli(..., common_poles=True))")
+    blocks = [real_blocks(f) for f in fits]
+    a = blocks[0][0].T  # the transposed realisation: residues into B, the common part into C
+    b = np.column_stack([blk[2] for blk in blocks])
+    c = blocks[0][1][None, :]
     d = np.array([[f.direct for f in fits]])
     return control.ss(a, b, c, d)
 

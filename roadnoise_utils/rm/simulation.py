@@ -159,18 +159,42 @@ class SimulationResult:
 
 
 def _run(sections: ModalSections, u: np.ndarray, dt: float) -> np.ndarray:
-    """Output of the modal sections for inputs ``u`` (n_inputs, n_samples) at step ``dt``."""
+    """Output of the modal sections for inputs ``u`` (n_inputs, n_samples) at step ``dt``.
 
-    def run(part: list[Section]) -> np.ndarray:
+    Consecutive sections of one pole (a mode driven by many inputs, as in a common-pole tire)
+    run as one: a section's output is real-linear in its gain :math:`c`, so
+    :math:`\\sum_k F_{c_k}(u_k) = F_1(\\sum_k \\mathrm{Re}\\,c_k u_k) + F_i(\\sum_k \\mathrm{Im}\\,c_k u_k)`:
+    two IIR passes per mode instead of one per input.
+    """
+
+    def run(part: list[list[Section]]) -> np.ndarray:
         out = np.zeros(u.shape[1])
-        for section in part:
-            b, a, zi = section_filter(section, dt)
-            v = u[section.source]
-            out += lfilter(b, a, v, zi=zi * v[0])[0]
+        for group in part:
+            if len(group) <= 2:
+                for section in group:
+                    b, a, zi = section_filter(section, dt)
+                    v = u[section.source]
+                    out += lfilter(b, a, v, zi=zi * v[0])[0]
+                continue
+            gains = np.array([section.gain for section in group])
+            sources = [section.source for section in group]
+            for unit, part_of in ((1.0, np.real), (1j, np.imag)):
+                mix = part_of(gains)
+                if unit == 1j and group[0].pole.imag == 0.0:
+                    continue  # a real pole has real gains
+                b, a, zi = section_filter(Section(group[0].pole, complex(unit), 0), dt)
+                v = mix @ u[sources]
+                out += lfilter(b, a, v, zi=zi * v[0])[0]
         return out
 
+    groups: list[list[Section]] = []
+    for section in sections.sections:
+        if groups and groups[-1][0].pole == section.pole:
+            groups[-1].append(section)
+        else:
+            groups.append([section])
     # lfilter releases the GIL: the sections run on two threads (the CI machine has 2 cores)
-    parts = [sections.sections[k::THREADS] for k in range(THREADS)]
+    parts = [groups[k::THREADS] for k in range(THREADS)]
     with ThreadPoolExecutor(THREADS) as pool:
         return sections.direct @ u + sum(pool.map(run, parts))
 

@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 import roadnoise_utils as ru
+from roadnoise_utils.analysis import relative_rms_error
 from roadnoise_utils.rm.fitting import vector_fit
 from tests.rm.conftest import BAND_FREQS
 
@@ -74,3 +75,61 @@ def test_at_least_as_good_as_scikit_rf(paper_fits, tire):
     rows = slice(0, None, 6)
     peer_errors, _ = ru.rm.fitting_peer.skrf_vector_fit(visco.freqs, visco.H[rows], paper_fits.n_poles)
     assert np.all(paper_fits.rms_errors[rows] <= peer_errors)
+
+
+def test_keeps_the_best_iteration_not_the_last(tire):
+    """A tassello whose error rises again after the second relocation (18 poles on the paper tire's
+    tassello 9): the fit keeps the earlier poles, and their error is the one a run capped at that
+    iteration (where it is the last) returns."""
+    visco = ru.stages.frf_visco(tire)
+    band = visco.freqs <= 250.0
+    f, h = visco.freqs[band], visco.H[8, band]
+    fit = vector_fit(f, h, n_poles=18, iterations=30, tolerance=1e-12)
+    assert fit.iterations == 30 and len(fit.errors) == 31
+    assert fit.rms_error == min(fit.errors) == fit.errors[fit.best_iteration]
+    assert fit.best_iteration < fit.iterations and fit.errors[-1] > 1.1 * fit.rms_error
+    assert relative_rms_error(fit(f), h) == pytest.approx(fit.rms_error, rel=1e-9)
+    capped = vector_fit(f, h, n_poles=18, iterations=fit.best_iteration, tolerance=1e-12)
+    assert capped.best_iteration == capped.iterations == fit.best_iteration
+    assert capped.rms_error == pytest.approx(fit.rms_error, rel=1e-12)
+    assert np.allclose(capped.poles, fit.poles, rtol=1e-12)
+
+
+def test_raising_the_iteration_cap_never_worsens_a_fit(tire):
+    visco = ru.stages.frf_visco(tire)
+    rows = visco.H[::8]
+    errors = [
+        ru.fit_tasselli(visco.freqs, rows, n_poles=18, f_max=250.0, iterations=cap, tolerance=1e-12).rms_errors
+        for cap in (2, 6, 20)
+    ]
+    assert np.all(errors[1] <= errors[0]) and np.all(errors[2] <= errors[1])
+
+
+def test_fits_the_data_band_unless_told(known_system):
+    _, _, frf = known_system(1)
+    wide = np.arange(0.0, 400.0)
+    h = np.concatenate([frf, frf[-1] * np.ones(wide.size - frf.size)])  # any data beyond 250 Hz
+    assert ru.fit_tasselli(wide, h).band == (0.0, 399.0)
+    assert ru.fit_tasselli(wide, h, f_max=250.0).band == (0.0, 250.0)
+
+
+def test_automatic_order_is_the_lowest_even_order_reaching_the_target(known_system):
+    poles, _, frf = known_system(2, n_pairs=4)  # exactly 8 poles and a constant
+    fits = ru.fit_tasselli(BAND_FREQS, np.array([frf, 0.5 * frf]), n_poles="auto", target_error=1e-8)
+    assert fits.n_poles == 8 and fits.rms_errors.max() <= 1e-8
+    assert ru.fit_tasselli(BAND_FREQS, frf, n_poles=6).rms_errors.max() > 1e-8  # the order below does not
+    with pytest.warns(ru.guards.RoadnoiseWarning, match="no even order up to 6 reaches target_error"):
+        capped = ru.fit_tasselli(BAND_FREQS, frf, n_poles="auto", target_error=1e-8, max_poles=6)
+    assert capped.n_poles == 6
+
+
+def test_bad_automatic_order_options(known_system):
+    _, _, frf = known_system()
+    with pytest.raises(ValueError, match="'auto'"):
+        ru.fit_tasselli(BAND_FREQS, frf, n_poles="many")
+    with pytest.raises(ValueError, match="target_error .* only with n_poles='auto'"):
+        ru.fit_tasselli(BAND_FREQS, frf, n_poles=8, target_error=0.01)
+    with pytest.raises(ValueError, match="target_error = -1"):
+        ru.fit_tasselli(BAND_FREQS, frf, n_poles="auto", target_error=-1)
+    with pytest.raises(ValueError, match="max_poles = 1"):
+        ru.fit_tasselli(BAND_FREQS, frf, n_poles="auto", max_poles=1)

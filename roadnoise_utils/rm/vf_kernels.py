@@ -1,0 +1,269 @@
+"""The linear-algebra kernels of vector fitting, shared by the per-tassello and the common-pole fits.
+
+Relaxed vector fitting (Gustavsen & Semlyen, IEEE Trans. Power Delivery 14(3), 1999; Gustavsen,
+IEEE Trans. Power Delivery 21(3), 2006) in the real partial-fraction basis: each complex pair
+:math:`p, \\bar p` carries the two real basis functions
+:math:`\\phi_1 = 1/(s-p) + 1/(s-\\bar p)` and :math:`\\phi_2 = i/(s-p) - i/(s-\\bar p)`, so every
+coefficient is real and the fitted :math:`G(s)` of paper Eq. 1 has a real impulse response.
+Frequencies are scaled (``s`` divided by the band's top angular frequency) by the callers.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+def check_data(freqs: np.ndarray, frf: np.ndarray, n_poles: int) -> None:
+    if freqs.ndim != 1 or frf.shape[-1] != freqs.size:
+        raise ValueError(f"frf must have the frequencies on its last axis ({freqs.size}), got shape {frf.shape}")
+    if not np.all(np.isfinite(freqs)) or np.any(freqs < 0):
+        raise ValueError("freqs must be finite and >= 0 Hz")
+    if not np.all(np.diff(freqs) > 0):
+        raise ValueError("freqs must be strictly increasing")
+    if not np.all(np.isfinite(frf)):
+        raise ValueError("frf contains NaN or inf")
+    zero = np.nonzero(np.max(np.abs(frf), axis=-1) == 0)[0]
+    if zero.size:
+        raise ValueError(f"frf row(s) {zero.tolist()} are zero at every frequency: there is nothing to fit")
+    unknowns = n_poles + 1
+    if 2 * freqs.size < 2 * unknowns + 1:
+        raise ValueError(
+            f"{freqs.size} frequencies give {2 * freqs.size} real equations, fewer than the "
+            f"{2 * unknowns + 1} needed for {n_poles} poles; give at least {unknowns + 1} frequencies"
+        )
+
+
+def initial_poles(n_poles: int) -> np.ndarray:
+    """Lightly damped complex pairs spread over the (scaled) band, one real pole if n is odd."""
+    n_pairs = n_poles // 2
+    imag = np.linspace(1.0 / (n_pairs + 1), 1.0, n_pairs) if n_pairs else np.array([])
+    pairs = -0.01 * imag + 1j * imag
+    poles = np.concatenate([np.ravel(np.column_stack([pairs, pairs.conj()])), [-0.5] * (n_poles % 2)])
+    return poles.astype(complex)
+
+
+def split_poles(poles: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Real poles and the upper members of the complex pairs."""
+    tol = 1e-10 * max(1.0, np.max(np.abs(poles)))
+    real = poles[np.abs(poles.imag) <= tol].real
+    upper = poles[poles.imag > tol]
+    return real, upper
+
+
+def basis(s: np.ndarray, real: np.ndarray, upper: np.ndarray) -> np.ndarray:
+    """Real-coefficient partial-fraction basis (Gustavsen & Semlyen 1999).
+
+    ``real`` (..., n_r) and ``upper`` (..., n_c) may carry leading batch dimensions; the result
+    is (..., n_s, n_r + 2 n_c) with the columns: real poles, then (phi1, phi2) of each pair.
+    """
+    sr = s[:, None]
+    cols = [1.0 / (sr - real[..., None, :])]
+    if upper.shape[-1]:
+        a = 1.0 / (sr - upper[..., None, :])
+        b = 1.0 / (sr - np.conj(upper)[..., None, :])
+        pair = np.stack([a + b, 1j * (a - b)], axis=-1)  # (..., n_s, n_c, 2)
+        cols.append(pair.reshape(*pair.shape[:-2], -1))
+    return np.concatenate(cols, axis=-1)
+
+
+def state_matrices(real: np.ndarray, upper: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Real block-diagonal (A, b), batched, whose c (sI - A)^-1 b reproduces :func:`basis`."""
+    batch = real.shape[:-1]
+    n_r, n_c = real.shape[-1], upper.shape[-1]
+    n = n_r + 2 * n_c
+    a = np.zeros((*batch, n, n))
+    b = np.zeros((*batch, n))
+    idx = np.arange(n_r)
+    a[..., idx, idx] = real
+    b[..., :n_r] = 1.0
+    k = n_r + 2 * np.arange(n_c)
+    a[..., k, k] = upper.real
+    a[..., k + 1, k + 1] = upper.real
+    a[..., k, k + 1] = upper.imag
+    a[..., k + 1, k] = -upper.imag
+    b[..., k] = 2.0
+    return a, b
+
+
+def stack_parts(m: np.ndarray) -> np.ndarray:
+    """Real and imaginary parts stacked along the row axis (-2)."""
+    return np.concatenate([m.real, m.imag], axis=-2)
+
+
+def relocate(s: np.ndarray, h: np.ndarray, w: np.ndarray, real: np.ndarray, upper: np.ndarray) -> np.ndarray:
+    """One relaxed pole relocation (Gustavsen 2006) for a batch of fits with the same pole structure.
+
+    ``h``, ``w``: (G, n_s); ``real`` (G, n_r), ``upper`` (G, n_c). Returns the zeros of each
+    fitted sigma(s), stabilised: (G, n) complex.
+    """
+    g, n_s = h.shape
+    n_r, n_c = real.shape[-1], upper.shape[-1]
+    n = n_r + 2 * n_c
+    # the design matrix [phi w, w, -phi h w, -h w], written in place (this step is memory-bound)
+    z = np.empty((g, n_s, 2 * n + 2), complex)
+    sr = s[None, :, None]
+    z[..., :n_r] = 1.0 / (sr - real[:, None, :])
+    if n_c:
+        a = 1.0 / (sr - upper[:, None, :])
+        b = 1.0 / (sr - np.conj(upper)[:, None, :])
+        z[..., n_r:n:2] = a + b
+        z[..., n_r + 1 : n : 2] = 1j * (a - b)
+    z[..., n] = 1.0
+    column_sum = z[..., : n + 1].sum(axis=1)
+    z[..., n + 1 :] = z[..., : n + 1] * (-(h * w))[..., None]
+    z[..., : n + 1] *= w[..., None]
+    # relaxation: Re(sum_k sigma(s_k)) = N, scaled like the data rows
+    scale = np.linalg.norm(h * w, axis=-1) / n_s
+    relax = np.zeros((g, z.shape[-1]))
+    relax[:, n + 1 :] = scale[:, None] * np.real(column_sum)
+    # normal equations of the stacked real system [Re z; Im z; relax] x = [0; 0; scale N]:
+    # Re(z^H z) + relax relax^T (ten times faster than QR/SVD on these tall, narrow systems and
+    # accurate enough for the iterative relocation; the final residues use an SVD solve)
+    normal = np.real(np.swapaxes(z.conj(), 1, 2) @ z) + relax[:, :, None] * relax[:, None, :]
+    rhs = relax * (scale * n_s)[:, None]
+    col = np.sqrt(np.diagonal(normal, axis1=1, axis2=2)).copy()
+    col[col == 0] = 1.0
+    x = solve_normal(normal / (col[:, :, None] * col[:, None, :]), rhs / col) / col
+    return sigma_zeros(real, upper, x[:, n + 1 : 2 * n + 1], x[:, 2 * n + 1])
+
+
+def sigma_zeros(real: np.ndarray, upper: np.ndarray, c_sigma: np.ndarray, d_sigma: np.ndarray) -> np.ndarray:
+    """Zeros of the fitted :math:`\\sigma(s) = c_\\sigma (sI - A)^{-1} b + d_\\sigma`, reflected into the left half-plane.
+
+    Batched: ``real`` (G, n_r), ``upper`` (G, n_c), ``c_sigma`` (G, n), ``d_sigma`` (G,); the
+    zeros, the next poles, are the eigenvalues of :math:`A - b c_\\sigma / d_\\sigma`
+    (Gustavsen & Semlyen 1999). Returns (G, n) complex.
+    """
+    d_sigma = np.where(np.abs(d_sigma) < 1e-8, np.where(d_sigma >= 0, 1e-8, -1e-8), d_sigma)
+    a, b = state_matrices(real, upper)
+    zeros = np.linalg.eigvals(a - b[..., :, None] * c_sigma[..., None, :] / d_sigma[:, None, None])
+    zeros = np.where(zeros.real > 0, -zeros.real + 1j * zeros.imag, zeros)  # enforce stability
+    tiny = np.abs(zeros.real) < 1e-6 * np.abs(zeros)
+    return np.where(tiny, -1e-6 * np.abs(zeros) + 1j * zeros.imag, zeros)
+
+
+def solve_normal(matrix: np.ndarray, rhs: np.ndarray) -> np.ndarray:
+    """Solutions of a batch of normal equations (G, m, m) x = (G, m); a singular one by least squares.
+
+    A starting pole set with coinciding columns makes a relocation's normal matrix exactly
+    singular in some BLAS builds (seen with OpenBLAS's Haswell kernels on one thread): its
+    minimum-norm least-squares solution relocates the poles as well.
+    """
+    try:
+        return np.linalg.solve(matrix, rhs[..., None])[..., 0]
+    except np.linalg.LinAlgError:
+        return np.stack([np.linalg.lstsq(m, r, rcond=None)[0] for m, r in zip(matrix, rhs)])
+
+
+def residues(s: np.ndarray, h: np.ndarray, w: np.ndarray, poles: np.ndarray, dc: complex | None):
+    """Real-coefficient residues and direct term for fixed poles, with the DC value imposed if given."""
+    real, upper = split_poles(poles)
+    phi = basis(s, real, upper)
+    if dc is None:
+        design = np.concatenate([phi, np.ones((s.size, 1))], axis=1)
+        target = h
+    else:
+        phi0 = basis(np.zeros(1), real, upper)[0]
+        design = phi - phi0[None, :]
+        target = h - dc
+    system = stack_parts(design * w[:, None])
+    col = np.linalg.norm(system, axis=0)
+    col[col == 0] = 1.0
+    coef = np.linalg.lstsq(system / col, stack_parts((target * w)[:, None])[:, 0], rcond=None)[0] / col
+    if dc is None:
+        c, d = coef[:-1], coef[-1]
+    else:
+        c, d = coef, float(np.real(dc - phi0 @ coef))
+    pair = c[real.size :].reshape(-1, 2)
+    upper_res = pair[:, 0] + 1j * pair[:, 1]
+    ordered_residues = np.concatenate(
+        [c[: real.size].astype(complex), np.ravel(np.column_stack([upper_res, upper_res.conj()]))]
+    )
+    ordered_poles = np.concatenate([real.astype(complex), np.ravel(np.column_stack([upper, upper.conj()]))])
+    return ordered_poles, ordered_residues, float(np.real(d))
+
+
+def fit_for_poles(
+    s: np.ndarray, h: np.ndarray, w: np.ndarray, poles: np.ndarray, dc: complex | None
+) -> tuple[np.ndarray, np.ndarray, float, np.ndarray, float]:
+    """Residues for fixed ``poles`` and the fit's selection error.
+
+    Returns ``(poles, residues, d, fitted, error)``: the ordered poles and residues
+    (:func:`residues`), the fitted response at ``s`` and the weighted relative RMS error
+    :math:`\\|w (G - H)\\|/\\|w H\\|` that the residues' least squares minimise.
+    """
+    p, r, d = residues(s, h, w, poles, dc)
+    fitted = (r[None, :] / (s[:, None] - p[None, :])).sum(axis=1) + d
+    error = float(np.linalg.norm(w * (fitted - h)) / np.linalg.norm(w * h))
+    return p, r, d, fitted, error
+
+
+def errors_for_poles(
+    s: np.ndarray, h: np.ndarray, w: np.ndarray, real: np.ndarray, upper: np.ndarray, dc: np.ndarray | None
+) -> np.ndarray:
+    """Selection errors of a batch of rows for fixed poles: :func:`fit_for_poles`'s error, batched.
+
+    ``h``, ``w`` (G, n_s); ``real`` (G, n_r), ``upper`` (G, n_c); ``dc`` (G,) or None. The same
+    least squares (DC imposed when given) solved by batched normal equations of the column-scaled
+    system instead of one SVD per row: the same error wherever it is above ~1e-10, which is all
+    the choice of the best iteration needs (the kept poles' residues and error come from
+    :func:`fit_for_poles`). Returns (G,) weighted relative RMS errors.
+    """
+    phi = basis(s, real, upper)  # (G, n_s, n)
+    if dc is None:
+        design = np.concatenate([phi, np.ones((*phi.shape[:-1], 1))], axis=-1)
+        target = h
+    else:
+        design = phi - basis(np.zeros(1), real, upper)  # (G, 1, n) broadcast over s
+        target = h - dc[:, None]
+    system = stack_parts(design * w[..., None])
+    col = np.linalg.norm(system, axis=-2)
+    col[col == 0] = 1.0
+    system /= col[:, None, :]
+    rhs = stack_parts((target * w)[..., None])[..., 0]
+    # normal equations, the residual then formed explicitly: an error dx in the coefficients adds
+    # only |A dx|^2 to the squared residual (the least-squares minimum is stationary), far below
+    # the fits' errors
+    coef = solve_normal(np.swapaxes(system, 1, 2) @ system, np.einsum("gij,gi->gj", system, rhs))
+    residual = np.einsum("gij,gj->gi", system, coef) - rhs
+    return np.linalg.norm(residual, axis=-1) / np.linalg.norm(h * w, axis=-1)
+
+
+def weights(freqs: np.ndarray, frf: np.ndarray, weight: np.ndarray | str) -> np.ndarray:
+    if isinstance(weight, str):
+        if weight not in ("uniform", "relative"):
+            raise ValueError(f"weight = {weight!r}: valid values are 'uniform', 'relative' or an array")
+        if weight == "uniform":
+            return np.ones(frf.shape)
+        mag = np.abs(frf)
+        return 1.0 / np.maximum(mag, 1e-12 * mag.max(axis=-1, keepdims=True))
+    try:
+        w = np.broadcast_to(np.asarray(weight, float), frf.shape)
+    except ValueError:
+        raise ValueError(
+            f"weight of shape {np.shape(weight)}: give one weight per frequency ({frf.shape[-1]}) or per FRF value "
+            f"{frf.shape}"
+        ) from None
+    if np.any(w < 0) or not np.all(np.isfinite(w)):
+        raise ValueError("weight must be finite, >= 0 and one per frequency")
+    return w
+
+
+def conjugate_closed(zeros: np.ndarray) -> np.ndarray:
+    """The zeros of a real sigma(s) as real poles + exact conjugate pairs (round-off removed)."""
+    real, upper = split_poles(zeros)
+    n_pairs = (zeros.size - real.size) // 2
+    if upper.size != n_pairs:  # round-off split a pair unevenly: keep the n_pairs most complex ones
+        upper = upper[np.argsort(-np.abs(upper.imag))][:n_pairs]
+        real = np.sort(zeros.real[np.argsort(np.abs(zeros.imag))][: zeros.size - 2 * n_pairs])
+    return np.concatenate([real.astype(complex), np.ravel(np.column_stack([upper, upper.conj()]))])
+
+
+def as_arrays(freqs, frf) -> tuple[np.ndarray, np.ndarray]:
+    """Frequencies (float) and FRFs (complex) as arrays, or a ValueError naming the one that is not numeric."""
+    for name, value, dtype in (("freqs", freqs, float), ("frf", frf, complex)):
+        try:
+            np.asarray(value, dtype)
+        except (TypeError, ValueError):
+            raise ValueError(f"{name} must be numbers ({'real' if dtype is float else 'complex'})") from None
+    return np.asarray(freqs, float), np.asarray(frf, complex)
