@@ -127,8 +127,8 @@ def _run_serial(designs: list[Design], run: tuple, bar: tqdm) -> dict[int, Desig
 
 
 def _client(scheduler: Any, n_workers: int) -> tuple[Any, Any]:
-    """``(client, cluster)``: a local cluster of ``n_workers`` processes for ``None``; a client of the given
-    address (cluster None); the given client itself (both None: the caller's to close)."""
+    """``(client, cluster)`` this call opens and must close: a local cluster of ``n_workers`` processes and its
+    client for ``None``; a client of the given address (no cluster); nothing for a given client (the caller's)."""
     from distributed import Client, LocalCluster
 
     if isinstance(scheduler, Client):
