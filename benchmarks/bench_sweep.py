@@ -11,7 +11,8 @@ stages (static state, direct FRF, ...). The cluster's time includes starting and
 the workers' imports); its start-up alone is timed apart; "one design's own time" is the mean
 wall time of a design where it ran (``table.attrs["design_seconds"]``): about the same in both
 modes when a core is free for each worker, longer on the cluster when the host's cores are
-taken by other work (the 1-minute load average is printed). Both must give the same table.
+taken by other work (the 1-minute load average is printed; "CPU / wall" is the share of a core a
+design had, below 1 when it waited for one). Both must give the same table.
 Ranges over the repeats: the machines are shared.
 """
 
@@ -63,6 +64,7 @@ def main() -> None:
     n = int(np.prod([len(v) for v in grid.values()]))
     times: dict[str, list[float]] = {"serial": [], "dask": []}
     each: dict[str, list[float]] = {"serial": [], "dask": []}
+    share: dict[str, list[float]] = {"serial": [], "dask": []}
     tables = {}
     load = [os.getloadavg()[0]]
     for _ in range(args.repeat):
@@ -70,18 +72,23 @@ def main() -> None:
             seconds, tables[name] = _timed_sweep(grid, args.outputs, scheduler)
             times[name].append(seconds)
             each[name].append(float(np.mean(tables[name].attrs["design_seconds"])))
+            share[name].append(
+                float(np.sum(tables[name].attrs["design_cpu_seconds"]) / np.sum(tables[name].attrs["design_seconds"]))
+            )
     load.append(os.getloadavg()[0])
     start = [_cluster_start() for _ in range(args.repeat)]
     pd.testing.assert_frame_equal(tables["serial"], tables["dask"])
     print(f"{n} ring designs of 165_65R14, outputs {args.outputs}, {usable_cores()} usable cores, empty cache each run")
     print(f"host load average (1 min) before and after: {load[0]:.1f}, {load[1]:.1f}")
-    print("| run | wall time (s) | designs per minute | wall time per design (s) | one design's own time (s) |")
-    print("|---|---|---|---|---|")
+    print(
+        "| run | wall time (s) | designs per minute | wall time per design (s) | one design's own time (s) | CPU / wall of a design |"
+    )
+    print("|---|---|---|---|---|---|")
     for name, label in (("serial", "serial (this process)"), ("dask", f"dask, local cluster of {usable_cores()}")):
-        t, e = np.array(times[name]), np.array(each[name])
+        t, e, c = np.array(times[name]), np.array(each[name]), np.array(share[name])
         print(
             f"| {label} | {t.min():.1f} - {t.max():.1f} | {60 * n / t.max():.1f} - {60 * n / t.min():.1f} "
-            f"| {t.min() / n:.2f} - {t.max() / n:.2f} | {e.min():.2f} - {e.max():.2f} |"
+            f"| {t.min() / n:.2f} - {t.max() / n:.2f} | {e.min():.2f} - {e.max():.2f} | {c.min():.2f} - {c.max():.2f} |"
         )
     print(f"cluster start-up with the workers' imports, and close: {min(start):.1f} - {max(start):.1f} s")
     print("tables equal: yes")

@@ -39,7 +39,6 @@
 # %%
 import matplotlib.pyplot as plt
 import numpy as np
-import pandas as pd
 
 import roadnoise_utils as ru
 
@@ -55,7 +54,7 @@ grid = {
     "operating.inflation_pressure": [2.3e5, 2.6e5],  # Pa
     "tread.normal_stiffness_per_area": [1.2e9, 1.8e9],  # N/m^3
 }
-outputs = ["K_v", "footprint", "f1", "zeta1", "cleat", "hub_acceleration"]
+outputs = ["K_v", "footprint", "f1", "zeta1", "cleat", "hub_acceleration"]  # the figures use all but footprint
 scheduler = None
 n_workers = None
 
@@ -100,13 +99,7 @@ print(
 # %%
 # NBVAL_CHECK_OUTPUT
 # The table: parameters and outputs in the paper's units
-shown = pd.DataFrame(
-    {
-        ru.figures.design_exploration.label(c)[0]: table[c] * ru.figures.design_exploration.label(c)[1]
-        for c in table.columns
-        if c not in ("warnings", "error")
-    }
-)
+shown = ru.figures.design_exploration.in_paper_units(table)
 print(shown.to_string(float_format=lambda v: f"{v:.3g}"))
 
 # %%
@@ -126,8 +119,8 @@ for index, warned in table["warnings"].items():
 
 # %%
 # The tire file as it is (a design of the grid when its own values are on it)
-own = {name: parameters.loc[name, "value"] for name in grid}
-on_grid = (table[[f"{n} ({parameters.loc[n, 'unit']})" for n in grid]] == list(own.values())).all(axis=1)
+own = [parameters.loc[name, "value"] for name in grid]
+on_grid = (table[table.attrs["parameters"]] == own).all(axis=1)
 baseline = table[on_grid].iloc[0] if on_grid.any() else None
 targets = ru.experiments.calibration.calibration_targets(tire_name)
 k_target, f_target = (targets.get(q) for q in ("vertical_stiffness", "first_vertical_resonance"))
@@ -161,11 +154,12 @@ print(effects.to_string(float_format=lambda v: f"{v:+.1%}"))
 
 # %% [markdown]
 # In this grid (the table above), pressure stiffens the tire ($K_v$), raises its first mode and, on
-# the rough road, the hub acceleration: the classic comfort/handling trade-off. The tread's normal stiffness barely moves
-# $K_v$ or $f_1$ (the tread is in series with a much softer carcass and air spring) but raises the
-# cleat's dynamic peak: the push of the cleat's edge reaches the hub through the edge rows of the
-# footprint, whose depth $1/\beta$, $\beta = (k_{tread}/4EI)^{1/4}$, shrinks as the tread stiffens
-# (notebook 04).
+# the rough road, the hub acceleration: the classic comfort/handling trade-off. The tread's
+# normal stiffness barely moves $K_v$ or $f_1$ (the tread is in series with a much softer
+# carcass and air spring) but raises the cleat's dynamic peak: the cleat's edge pushes on the
+# edge rows of the footprint, which carry most of its stiffness in a zone $1/\beta$ deep,
+# $\beta = (k_{tread}/4EI)^{1/4}$ (a beam on an elastic foundation; notebook 04), and a stiffer
+# tread concentrates it there.
 #
 # ## 5. Where it fails: the footprint moves in steps of the mesh
 #
@@ -194,7 +188,7 @@ print("steps between them (elements):", ", ".join(f"{d:.1f}" for d in np.diff(le
 # * **A bigger grid or a sample.** Enlarge `grid` above, or pass a Latin-hypercube sample:
 #   `ru.experiments.sample({"operating.inflation_pressure": (2.0e5, 2.6e5), "belt.bending_stiffness": (2.5, 10.0)}, 20, seed=0)`.
 # * **Contact loss.** Add `"one_sided"` to `outputs` for the one-sided cleat peaks of notebook 08
-#   (about 25 s a ring design on one core).
+#   (about 20 s a ring design on one core).
 # * **Your cluster.** `scheduler="tcp://host:8786"` (or a `distributed.Client`) runs the same
 #   sweep there; its workers need this package and, to share the per-design cache, the same
 #   `ROADNOISE_CACHE_DIR`.

@@ -16,7 +16,7 @@ output               computed by                                                
 ``K_v``, footprint   :func:`roadnoise_utils.repro.stages.solve_static` (flat)     ~0.1 s
 ``f1``, ``zeta1``    :func:`.calibration.calibration_values` (direct FRF, flat)   ~2 s
 ``cleat``            :func:`.cleat.cleat_test` (linear RM chain on the drum)       ~3 s more
-``one_sided``        :func:`.one_sided_cleat.one_sided_cleat_test` (ring) or      ~25 s more
+``one_sided``        :func:`.one_sided_cleat.one_sided_cleat_test` (ring) or      ~20 s more
                      :func:`.section_contact.section_cleat_test` (cross-section)
 ``hub_acceleration`` :func:`.corner.corner_setup` on the vehicle file, the        ~1 s more
                      predicted hub PSD on the road test's texture, its band RMS
@@ -342,17 +342,23 @@ class DesignResult:
     values : dict of str to float
         Output column -> value (SI units).
     warnings : tuple of str
-        The warnings its computation gave (kept with the cached result).
+        The warnings its computation gave (kept with the cached result; a stage beneath it read
+        from the stage cache does not warn again, so a design recomputed over cached stages may
+        report fewer).
     computed : bool
         Computed in this call (False: read from the cache).
     seconds : float
         Wall time of this call (s).
+    cpu_seconds : float
+        CPU time of this process during the call, all its threads (s): against ``seconds``, the
+        share of a core the design had.
     """
 
     values: dict[str, float]
     warnings: tuple[str, ...]
     computed: bool
     seconds: float
+    cpu_seconds: float
 
 
 def evaluate_design(
@@ -365,7 +371,7 @@ def evaluate_design(
     with the values, so a result read back from the cache reports them too.
     """
     outputs = check_outputs(outputs)
-    start = time.perf_counter()
+    start, cpu = time.perf_counter(), time.process_time()
     computed = []
 
     def compute() -> tuple[dict[str, float], tuple[str, ...]]:
@@ -381,4 +387,4 @@ def evaluate_design(
         values, caught = cached(evaluate_design, inputs, compute, runs=(evaluate_design, *stages.frf_runs(spec)))
     else:
         values, caught = compute()
-    return DesignResult(dict(values), caught, bool(computed), time.perf_counter() - start)
+    return DesignResult(dict(values), caught, bool(computed), time.perf_counter() - start, time.process_time() - cpu)

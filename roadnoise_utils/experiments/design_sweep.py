@@ -198,7 +198,7 @@ def sweep(
     outputs : str or iterable of str
         Any of :data:`~.design.OUTPUTS`: ``"K_v"``, ``"footprint"``, ``"f1"``, ``"zeta1"``,
         ``"cleat"`` (linear RM chain on the drum), ``"one_sided"`` (the FE tire with contact loss,
-        ~25 s a ring design), ``"hub_acceleration"`` (quarter car on the road test). Default
+        ~20 s a ring design), ``"hub_acceleration"`` (quarter car on the road test). Default
         :data:`~.design.CHEAP_OUTPUTS`.
     tire : str or spec
         The tire file the designs start from (ring or cross-section), default the paper's.
@@ -222,7 +222,8 @@ def sweep(
         Index ``design`` (0, 1, ...); the parameter columns (``"<name> (<unit>)"``), the output
         columns and ``warnings`` (what each design's computation warned about, "" if nothing).
         ``attrs``: ``computed`` and ``from_cache`` (designs computed in this call and read from
-        the cache), ``seconds`` (wall time), ``scheduler``, ``design_seconds`` (per design).
+        the cache), ``seconds`` (wall time), ``scheduler``, ``design_seconds`` and
+        ``design_cpu_seconds`` (each design's wall and CPU time where it ran, s).
 
     Raises
     ------
@@ -257,6 +258,9 @@ def sweep(
         seconds=time.perf_counter() - start,
         scheduler=SERIAL if scheduler == SERIAL else ("local" if scheduler is None else str(scheduler)),
         design_seconds=[r.seconds if isinstance(r, DesignResult) else float("nan") for _, r in sorted(found.items())],
+        design_cpu_seconds=[
+            r.cpu_seconds if isinstance(r, DesignResult) else float("nan") for _, r in sorted(found.items())
+        ],
     )
     failures = {i: r for i, r in found.items() if isinstance(r, BaseException)}
     warned = int((table["warnings"] != "").sum())

@@ -33,6 +33,12 @@ def label(column: str) -> tuple[str, float]:
     return LABELS.get(column, (column, 1.0))
 
 
+def in_paper_units(table: pd.DataFrame) -> pd.DataFrame:
+    """The sweep's parameter and output columns converted to the units of :data:`LABELS`, relabelled."""
+    columns = [c for c in table.columns if c not in ("warnings", "error")]
+    return pd.DataFrame({label(c)[0]: table[c] * label(c)[1] for c in columns}, index=table.index)
+
+
 def plot_trade_off(
     table: pd.DataFrame,
     x: str,
