@@ -13,6 +13,7 @@ experiment                     what it runs                                     
 :func:`band_extension`         the chain at 0-250 and 0-400 Hz, cleat and road   10
 :func:`whole_car_run`          the whole car on a 3-D road, spectra, checks       11
 :func:`cavity.cavity_frfs`     the ring tire's FRFs with its air cavity           11
+:func:`sweep`                  a grid or sample of tire designs on dask -> table  12
 =============================  ================================================  ==========
 
 ``*_conditions`` functions resolve a test's defaults (an argument left at ``None`` is the
@@ -27,6 +28,8 @@ from . import (
     conditions,
     corner,
     cross_section,
+    design,
+    design_sweep,
     moving_hub,
     one_sided_cleat,
     paper_defaults,
@@ -38,6 +41,7 @@ from .bands import BandExtension, BandModel, band_extension
 from .calibration import calibration_table
 from .cleat import CleatConditions, CleatRun, CleatTest, cleat_conditions, cleat_test
 from .corner import CornerSetup, QuarterCarTest, corner_setup, quarter_car
+from .design_sweep import SweepError, sample, sweep
 from .moving_hub import MovingHubCheck, Suspension, moving_hub_check, suspension_conditions
 from .one_sided_cleat import (
     FrozenCheck,
@@ -94,5 +98,10 @@ __all__ = [
     "whole_car",
     "section_frozen_check",
     "speed_sweep",
+    "SweepError",
+    "design",
+    "design_sweep",
+    "sample",
+    "sweep",
     "suspension_conditions",
 ]
