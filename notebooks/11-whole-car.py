@@ -388,12 +388,13 @@ print(f"rigid torus {cavity_frfs.rigid_torus:.1f} Hz; loaded cavity: fore-aft {c
 # the wall's motion pumps air that moves along with it: the convected Webster equation
 # $\frac{A}{c^2} D_t^2 p - (A p')' = -\rho D_t^2 q$, $D_t = \partial_t + U\partial_s$ (Myers'
 # condition on a wall the flow runs along), in the modes at rest
-# (`tire/cavity.py`, `rolling_coupling`). The tire's structure stays the paper's, linearised at
-# rest; the air's convection is the change. The flow mixes the fore-aft (odd) and vertical
-# (even) modes, so the FRFs are solved with the left-right mirror only. Checked against the tire
-# and every waveguide node solved as one convected $(u, p)$ system (to 2e-10), and, with the
-# coupling weakened, the FRFs' cavity peaks sit on the waveguide's rolling doublet
-# (`tests/response/test_frf.py`).
+# (`tire/cavity.py`, `rolling_coupling`; the air's mass flux the same through every section).
+# The tire's structure stays the paper's, linearised at rest; the air's convection is the
+# change. The flow mixes the fore-aft (odd) and vertical (even) modes, so the FRFs are solved
+# with the left-right mirror only. Checked against the Doppler shift of a wall wave on a uniform
+# torus (Galilean invariance, to 1e-3), against the tire and every waveguide node solved as one
+# convected $(u, p)$ system (to 2e-10), and, with the coupling weakened, the FRFs' cavity peaks
+# sit on the waveguide's rolling doublet (`tests/tire/test_cavity.py`, `tests/response/test_frf.py`).
 
 # %%
 # NBVAL_IGNORE_OUTPUT
@@ -416,13 +417,18 @@ for speed, h_tot, doublet in zip(rolling.speeds_kmh, rolling.H_tot, rolling.doub
           f"{', '.join(f'{f:.1f}' for f in peaks)} Hz, largest {np.abs(h_tot).max() / rest_peak:.2f} of at rest")  # fmt: skip
 
 # %% [markdown]
-# At rest the hub feels only the vertical mode (coupled with the belt mode next to it); rolling,
-# each of the two waves carries part of it into the hub: a second peak appears near the lower
-# wave and the main one falls as the doublet spreads. Feng & Gu measured this on a rolling
-# tire: spindle forces, fore-aft and vertical, with two cavity peaks whose frequencies depend on
-# the load and on the speed (SAE 2009-01-2104; IMAC 2011). Their spectra are not available to us,
-# so the comparison here is the mechanism, not numbers. The RM chain and the car below keep the
-# FRFs at rest (the paper's fixed-hub FRFs, one set for every speed).
+# At rest only the vertical (even) mode reaches the vertical hub force (the loaded tire is
+# symmetric fore-aft, the odd mode gives none), and tuned beside the belt mode at ~232 Hz it
+# amplifies that peak several times. Rolling, the doublet becomes two waves, each nearly half
+# even and half odd, some 15-20 Hz either side: the lower one makes a peak of its own, the upper
+# one merges into the belt's, and the belt peak, no longer amplified by a cavity mode at its
+# frequency, falls back toward the plain tire's. The belt's own rotation, left out here as in the
+# paper's FRFs, would move that belt mode too: the speed dependence of its peak is this model's.
+# Feng & Gu measured spindle forces, fore-aft and vertical, on a rolling tire with two cavity
+# peaks whose frequencies depend on the load and on the speed (SAE 2009-01-2104; IMAC 2011).
+# Their spectra are not available to us, so the comparison here is the mechanism, not numbers.
+# The RM chain and the car below keep the FRFs at rest (the paper's fixed-hub FRFs, one set for
+# every speed).
 
 # %% [markdown]
 # ### The cavity through the RM chain and the car

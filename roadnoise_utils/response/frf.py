@@ -142,7 +142,7 @@ class HubForceSolver:
     def _solver(self, lu, omega: float):
         """Solves with :math:`D(\\omega)`, or with the cavity's :math:`D - V C W^T` by Woodbury's identity
         :math:`x + Z C (I - W^T Z C)^{-1} W^T x`, :math:`Z = D^{-1} V`, :math:`x = D^{-1} b`; transposed
-        (``trans="T"``, :math:`D` symmetric) with :math:`V \\leftrightarrow W` and :math:`C^T`. At rest
+        (``trans="T"``) with :math:`V \\leftrightarrow W`, :math:`C^T` and :math:`Z_W = D^{-T} W`. At rest
         :math:`W = V` (one set of solves)."""
         terms = self.loaded.cavity_terms(omega)
         if terms is None:
@@ -150,7 +150,7 @@ class HubForceSolver:
         t = self._basis
         v, c, w = np.asarray(t.T @ terms[0]), terms[1], np.asarray(t.T @ terms[2])
         z_v = lu.solve(v.astype(complex))
-        z_w = z_v if terms[2] is terms[0] else lu.solve(w.astype(complex))
+        z_w = z_v if terms[2] is terms[0] else lu.solve(w.astype(complex), trans="T")
         forward = np.eye(c.shape[0]) - (w.T @ z_v) @ c
         adjoint = np.eye(c.shape[0]) - (v.T @ z_w) @ c.T
 

@@ -165,3 +165,20 @@ def test_effects_are_the_relative_changes_across_each_parameter_the_others_held(
     np.testing.assert_allclose(found["y (N)"], [3.0, 1.0])  # 2^2 - 1 and 2 - 1
     scattered = table.assign(**{"b (Pa)": [10.0, 20.0, 15.0, 25.0]})  # no pair shares b
     assert np.isnan(design_sweep.effects(scattered, ["a (m)", "b (Pa)"], ["y (N)"]).loc["a (m): 1 -> 2", "y (N)"])
+
+
+def test_the_default_cluster_workers_keep_glibc_s_own_trim_threshold():
+    """distributed's 64 KiB MALLOC_TRIM_THRESHOLD_ made every design ~1.6x slower in a worker (each frequency's
+    sparse factorisation faulting its pages in again); the default cluster's workers run without it, one BLAS
+    thread each."""
+    import os
+
+    from roadnoise_utils.experiments import design_sweep
+
+    client, cluster = design_sweep._client(None, 1)
+    try:
+        seen = client.run(lambda: (os.environ.get("MALLOC_TRIM_THRESHOLD_"), os.environ.get("OMP_NUM_THREADS")))
+    finally:
+        client.close()
+        cluster.close()
+    assert list(seen.values()) == [(None, "1")]

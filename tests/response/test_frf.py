@@ -131,7 +131,7 @@ def _convected_monolithic(fet, static, coupling, omega, flow):
     acoustic = (
         (1 - beta**2) * (1 + 2j * coupling.damping_ratio) * k_a
         - x**2 * m_a
-        + 2j * x * beta * cavity.convection_matrix(coupling.area)
+        + 2j * x * beta * cavity.convection_matrix(cavity.flux_area(coupling.area))
     )
     source = (cav.density * cav.sound_speed**2) * (
         x**2 * sp.identity(n) - 2j * x * beta * cavity.convection_matrix(np.ones(n)) / spacing + beta**2 * k_0 / spacing
