@@ -27,7 +27,7 @@ force arrays plus a fixed ~40 MB (the impulse responses and one block's spectra)
 record's length.
 
 **Speed** (``benchmarks/bench_road_simulation.py``, 195/65 R15, 2-D road, 9.6 kHz, README
-"Performance"): at 2e6 samples ~0.5 s and 90 MB against ~10-17 s and 2.3 GB per tassello. It is
+"Performance"): at 2e6 samples 0.24-0.84 s and 90 MB against 6.8-32.8 s and 2.3 GB per tassello. It is
 an explicit function, not a path :func:`.simulation.simulate` takes by itself: ``simulate`` gets
 the tasselli's inputs, which this never forms.
 """
