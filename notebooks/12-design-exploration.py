@@ -137,7 +137,7 @@ plot(
     table, "f1 (Hz)", "a_hub_rms (m/s^2)", "zeta1 (-)", ax=right, baseline=baseline,
     target=(f_target["low"], f_target["high"]) if f_target else None, target_label="f1 target",
 )  # fmt: skip
-fig.suptitle("Design trade-offs of the 165/65 R14: the cleat, the road and the first mode")
+fig.suptitle(f"Design trade-offs of the {ru.load_tire(tire_name).name}: the cleat, the road and the first mode")
 plt.show()
 
 # %% [markdown]

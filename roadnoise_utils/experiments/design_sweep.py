@@ -160,10 +160,9 @@ def _glibc_trim_threshold():
     (``os.environ.update`` in ``distributed.nanny``); a value of the user's own is kept. The BLAS and
     OpenMP thread limits stay.
     """
-    injected = str((dask.config.get("distributed.nanny.pre-spawn-environ", {}) or {}).get(_TRIM, ""))
-    environ = {
-        k: v for k, v in (dask.config.get("distributed.nanny.pre-spawn-environ", {}) or {}).items() if k != _TRIM
-    }
+    spawn = dask.config.get("distributed.nanny.pre-spawn-environ", {}) or {}
+    injected = str(spawn.get(_TRIM, ""))
+    environ = {k: v for k, v in spawn.items() if k != _TRIM}
     left = os.environ.get(_TRIM)
     if left is not None and left == injected:
         del os.environ[_TRIM]

@@ -78,11 +78,16 @@ class LoadedTire:
         ``v_hub``, ``w_hub`` (modes,) their hub-vertical rows. At rest ``C`` is diagonal and ``W = V``."""
         if self.cavity is None:
             return None
+        last = self.__dict__.get("_cavity_terms_at")
+        if last is not None and last[0] == omega:  # hub_row, hub_column, hub_diagonal and the solve: one frequency
+            return last[1]
         hub = self.fet.mesh.hub_dofs[1]
         c, w = self.cavity.terms(omega)
         v = self.cavity.volume
         v_free = v[self.free]
-        return v_free, c, (v_free if w is v else w[self.free]), v[hub], w[hub]
+        terms = v_free, c, (v_free if w is v else w[self.free]), v[hub], w[hub]
+        object.__setattr__(self, "_cavity_terms_at", (omega, terms))  # the last frequency's, not an input
+        return terms
 
     @property
     def n_contact(self) -> int:
