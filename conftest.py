@@ -3,15 +3,23 @@
 The suite runs on ``-n auto`` workers (pytest-xdist, one per core, each test file on one worker:
 ``--dist loadfile`` keeps a notebook's cells in order on one kernel). Each worker, and every
 kernel it starts, gets one BLAS thread: two BLAS pools on two cores made some notebooks run
-7-9x slower. Stages two workers need at once are computed once: the stage cache locks per key.
+7-9x slower. A thread count set in the environment (``OPENBLAS_NUM_THREADS`` or
+``OMP_NUM_THREADS``, e.g. to check that the results do not depend on it) is honoured instead.
+Stages two workers need at once are computed once: the stage cache locks per key.
 """
 
 from __future__ import annotations
 
 import os
 
+BLAS_VARIABLES = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
+
 if os.environ.get("PYTEST_XDIST_WORKER"):
-    os.environ.update(dict.fromkeys(("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"), "1"))
+    _threads = os.environ.get("OPENBLAS_NUM_THREADS") or os.environ.get("OMP_NUM_THREADS") or "1"
+    if not _threads.isdigit() or int(_threads) < 1:
+        raise ValueError(f"OPENBLAS_NUM_THREADS / OMP_NUM_THREADS = {_threads!r}: valid values are integers >= 1")
+    for _name in BLAS_VARIABLES:
+        os.environ.setdefault(_name, _threads)
     from threadpoolctl import threadpool_limits
 
-    _ONE_BLAS_THREAD = threadpool_limits(1)  # the libraries numpy has already loaded
+    _BLAS_THREADS = threadpool_limits(int(_threads))  # the libraries numpy has already loaded

@@ -97,7 +97,9 @@ print(f"tracks of the 3-D road: {ru.road.two_track.wheel_tracks(static, car.posi
 # %% [markdown]
 # The car's modes on its tires, from the closed model (python-control, `setup.model`: the four
 # $F_F$ in, 18 outputs): the body's heave, pitch and roll near 1.5 Hz, each corner's wheel hop
-# near 14 Hz. The corner dampers are the quarter car's, so the body modes are well damped.
+# near 14 Hz. The corner dampers are the quarter car's, so the body modes are well damped. The
+# car is symmetric left to right: in each wheel-hop mode both wheels of an axle carry the same
+# kinetic energy (in phase or in opposition), so both are named.
 
 # %%
 # NBVAL_CHECK_OUTPUT

@@ -1,4 +1,5 @@
-"""Small analysis helpers shared by the stages: resonance peaks, relative errors, damped components."""
+"""Small analysis helpers shared by the stages: resonance peaks, relative errors, damped components,
+the largest of equal candidates."""
 
 from __future__ import annotations
 
@@ -88,6 +89,22 @@ def peak_comparison(
 def format_small(value: float, floor: float = 1e-9) -> str:
     """``"< floor"`` for round-off-sized values, else ``value`` in ``.1e``: stable printed output."""
     return f"< {floor:.0e}" if abs(value) < floor else f"{value:.1e}"
+
+
+def argmax_all(values: np.ndarray, rtol: float = 1e-6) -> np.ndarray:
+    """Indices of every value within ``rtol`` (relative) of the largest, ascending.
+
+    The choice of "the largest" among equal candidates — the mirror images of a symmetric
+    footprint, the left and right wheels of a symmetric car — is left to round-off by
+    ``np.argmax``, which changes with the BLAS build and the thread count; this names them all.
+    """
+    values = np.asarray(values, dtype=float)
+    if values.ndim != 1 or values.size == 0 or not np.all(np.isfinite(values)):
+        raise ValueError(f"values: need a finite, non-empty 1-D array, got shape {values.shape}")
+    if not 0.0 <= rtol < 1.0:
+        raise ValueError(f"rtol = {rtol}: valid range is [0, 1)")
+    top = values.max()
+    return np.flatnonzero(values >= top - rtol * abs(top))
 
 
 def damped_components(y: np.ndarray, dt: float, n_components: int = 6) -> pd.DataFrame:

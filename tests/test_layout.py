@@ -1,14 +1,18 @@
 """The package layout keeps its promises: data flows one way, no private names cross modules,
-condition files are read only by the experiments, modules stay short, tests mirror the folders."""
+condition files are read only by the experiments, modules stay short, tests mirror the folders,
+and no checked notebook output prints round-off."""
 
 from __future__ import annotations
 
 import ast
+import json
+import re
 from pathlib import Path
 
 import pytest
 
 from roadnoise_utils.repro.cache import PACKAGE_DIR
+from roadnoise_utils.repro.paths import REPO_ROOT
 
 #: Layers in the order the data flows; a module may import from its own layer or an earlier one.
 LAYERS = [
@@ -100,3 +104,45 @@ def test_tests_mirror_the_package_folders():
         assert (PACKAGE_DIR / folder).is_dir() and (tests / folder).is_dir(), folder
         names = {p.stem.removeprefix("test_") for p in (tests / folder).glob("test_*.py")}
         assert names <= {p.stem for p in (PACKAGE_DIR / folder).glob("*.py")}, folder
+
+
+#: A number in ``e`` format (``2.9e-12``, ``-1.0E-10``) not preceded by ``<`` (``< 1e-10`` is a bound).
+E_FORMAT = re.compile(r"(?<![<\w.])(?<!< )[-+]?\d+(?:\.\d+)?[eE][-+]?\d+")
+#: Below this a printed value is round-off: it changes with the BLAS build and the thread count.
+ROUND_OFF = 1e-9
+
+
+def round_off_values(text: str) -> list[str]:
+    """The numbers in ``text`` printed in ``e`` format with a magnitude below :data:`ROUND_OFF`, bounds excepted."""
+    return [m for m in E_FORMAT.findall(text) if abs(float(m)) < ROUND_OFF]
+
+
+def test_the_round_off_pattern_finds_values_and_spares_bounds():
+    assert round_off_values("difference: 2.9e-12, row 2.467e-12  -1.0E-10, zero 0.0e+00") == [
+        "2.9e-12",
+        "2.467e-12",
+        "-1.0E-10",
+        "0.0e+00",
+    ]
+    assert round_off_values("< 1e-10; max DC error <1e-12; 5.51e-05; 1e-09; 4.4e-08; 2.32e-03; x1e-12") == []
+
+
+def _checked_outputs() -> list[tuple[str, int, str]]:
+    found = []
+    for path in sorted((REPO_ROOT / "notebooks").glob("[0-9][0-9]-*.ipynb")):
+        for k, cell in enumerate(json.loads(path.read_text())["cells"]):
+            if cell["cell_type"] == "code" and "NBVAL_CHECK_OUTPUT" in "".join(cell["source"]):
+                text = []
+                for out in cell.get("outputs", []):
+                    text.append("".join(out.get("text", "")) + "".join(out.get("data", {}).get("text/plain", "")))
+                found.append((path.name, k, "".join(text)))
+    return found
+
+
+def test_no_checked_output_prints_round_off():
+    """A checked output that prints a residual (< 1e-9) as a value passes only on the machine that
+    stored it: print the bound it meets (``ru.analysis.format_small``) and assert it instead."""
+    checked = _checked_outputs()
+    assert len(checked) > 50  # the notebooks were found
+    offending = {f"{name} cell {k}": values for name, k, text in checked if (values := round_off_values(text))}
+    assert not offending, f"checked outputs print round-off as values: {offending}"

@@ -85,8 +85,15 @@ def tolerance_text(claim: dict) -> str:
     return ", ".join(parts)
 
 
+#: Below this a value is round-off (a residual, a superposition error): the report gives the bound
+#: it meets, as the notebooks do, so that its text does not change with the BLAS build.
+ROUND_OFF = 1e-9
+
+
 def _format(value: float) -> str:
-    if value == 0 or 1e-3 <= abs(value) < 1e5:
+    if abs(value) < ROUND_OFF:
+        return f"< {ROUND_OFF:.0e}"
+    if 1e-3 <= abs(value) < 1e5:
         return f"{value:.4g}"
     return f"{value:.2e}"
 

@@ -32,6 +32,7 @@ import numpy as np
 import pandas as pd
 
 from .. import guards
+from ..analysis import argmax_all
 from ..repro.paths import data_file, read_toml
 from ..rm.fitting import FitSet
 from ..rm.moving_hub import hub_statespace
@@ -247,10 +248,21 @@ def full_car_statespace(car: FullCar, tire_hub_mass: float = 0.0) -> control.Sta
     return control.ss(a_mat, b_mat, c_mat, d_mat, inputs=[f"F_tire_{c}" for c in CORNERS], outputs=outputs)
 
 
+#: DOFs whose kinetic energy in a mode is within this fraction of the largest are all named dominant:
+#: on a left-right symmetric car the two wheels of an axle carry equal energy (to ~1e-8, the
+#: eigenvectors' accuracy), and picking one would leave the choice to round-off.
+ENERGY_TIE = 1e-3
+
+
 def car_modes(car: FullCar, model: control.StateSpace, tire_hub_mass: float, f_max: float = 30.0) -> pd.DataFrame:
     """The modes of the car on its tires (``model`` from :func:`full_car_model`) below ``f_max`` Hz:
     natural frequency (Hz), damping ratio, and the DOF with the largest share of the car's kinetic
-    energy in it (the closed model's first states are the car's, :func:`full_car_statespace`)."""
+    energy in it (the closed model's first states are the car's, :func:`full_car_statespace`).
+
+    ``dominant DOF`` names every DOF within :data:`ENERGY_TIE` of the largest energy, in the
+    car's DOF order, joined by ``" = "`` (``"FL.unsprung = FR.unsprung"`` on a symmetric car);
+    ``its energy share`` is the share of one of them.
+    """
     corners = {c: with_extra_hub_mass(car.corner(c), tire_hub_mass) for c in CORNERS}
     names, _, mass = _dof(car, corners)
     lam, vectors = np.linalg.eig(np.asarray(model.A))
@@ -262,7 +274,7 @@ def car_modes(car: FullCar, model: control.StateSpace, tire_hub_mass: float, f_m
             {
                 "frequency (Hz)": abs(lam[k]) / (2 * np.pi),
                 "damping ratio": -lam[k].real / abs(lam[k]),
-                "dominant DOF": names[int(np.argmax(energy))],
+                "dominant DOF": " = ".join(names[i] for i in argmax_all(energy, ENERGY_TIE)),
                 "its energy share": float(energy.max() / energy.sum()),
             }
         )

@@ -33,6 +33,15 @@ def test_report_passes_fails_and_deviations(tmp_path):
     assert "ring: 2 of 3 claims reproduced" in text and "known deviation: [ring: c]" in text and "explained" in text
 
 
+def test_the_report_gives_round_off_as_the_bound_it_meets():
+    """A residual of round-off size (here 1.2e-10 on one BLAS build, 7.3e-11 on another) is written
+    as the bound, so the report's text is the same on every machine; larger values keep their digits."""
+    table = claims.report(claims=SMALL[:2], evaluators={"a": lambda m: 10.5, "b": lambda m: 1.2e-10}, models=("ring",))
+    assert list(table["ours (ring)"]) == ["10.5", "< 1e-09"] and list(table["verdict (ring)"]) == ["pass", "pass"]
+    small = claims.report(claims=SMALL[1:2], evaluators={"b": lambda m: 2.85e-8}, models=("ring",))
+    assert small["ours (ring)"].iloc[0] == "2.85e-08"
+
+
 def test_each_tire_model_gets_its_column_deviations_and_exemptions():
     """A claim judged per model: the cross-section column has its own deviation and n/a reasons."""
     two = [

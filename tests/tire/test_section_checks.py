@@ -79,8 +79,9 @@ def test_inflated_torus_carries_the_membrane_forces():
 
 
 def test_harmonic_sum_equals_a_direct_three_d_assembly():
-    """(e) Receptance of a clamped band under vertical point forces: harmonic sum = 3-D solve to 1e-6."""
-    assert section_checks.three_d_check() < 1e-6
+    """(e) Receptance of a clamped band under vertical point forces: harmonic sum = 3-D solve to round-off
+    (about 3e-12; the bound leaves room for other BLAS builds)."""
+    assert section_checks.three_d_check() < 1e-10
 
 
 def test_the_pneumatic_stiffness_leaves_rigid_rotations_free():

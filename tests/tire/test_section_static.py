@@ -17,7 +17,7 @@ from roadnoise_utils.response.section_footprint import (
 )
 from roadnoise_utils.tire.section_contact import harmonic_flexibility, vertical_compliance
 from roadnoise_utils.tire.section_dynamics import reduce_harmonic, ritz_error
-from roadnoise_utils.tire.section_static import section_summary, solve_section_static
+from roadnoise_utils.tire.section_static import force_balance, section_summary, solve_section_static
 
 NAME = "165_65R14_cross_section"
 
@@ -38,6 +38,7 @@ def test_force_balance_to_round_off(flat):
     assert flat.contact_force.sum() == pytest.approx(flat.load, rel=1e-12)
     assert flat.hub_force / (flat.load * spread) - 1 == pytest.approx(0.0, abs=1e-9)
     assert np.all(flat.contact_force >= 0)
+    assert force_balance(flat) < 1e-9 and section_summary(flat)["force balance (contact and hub = load to 1e-9)"]
 
 
 def test_footprint_is_fore_aft_symmetric_and_inside_the_grid(flat):

@@ -82,6 +82,19 @@ def test_the_coupled_car_is_stable_and_its_delay_notches_are_at_kV_over_L(car, c
         assert at.max() < 1e-9 * peak
 
 
+def test_the_car_modes_name_both_wheels_of_an_axle_on_a_symmetric_car(car, car_model, car_tire):
+    """The car is symmetric left to right, so each wheel-hop mode moves both wheels of an axle with
+    equal energy: both are named, in the car's DOF order, whatever round-off says; the body modes
+    name one DOF each."""
+    modes = full_car.car_modes(car, car_model[0], car_tire[-1])
+    hops = modes[modes["frequency (Hz)"] > 5.0]["dominant DOF"].tolist()
+    assert len(hops) == 4 and sorted(hops) == sorted(
+        ["FL.unsprung = FR.unsprung"] * 2 + ["RL.unsprung = RR.unsprung"] * 2
+    )
+    body = modes[modes["frequency (Hz)"] < 5.0]["dominant DOF"].tolist()
+    assert body == ["heave", "pitch", "roll"]
+
+
 def test_time_and_frequency_domain_agree_per_octave_on_a_2d_road(car, car_model):
     """The four wheels on a 2-D road, rear delayed, simulated in time; band powers of hub, top-mount
     and body accelerations within 20 % of the frequency-domain prediction per octave, 20-250 Hz.
