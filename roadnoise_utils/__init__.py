@@ -32,9 +32,9 @@ The package, one folder per stage, data flowing one way:
 
 from . import analysis, experiments, figures, guards, response, rm, road, tire, vehicle
 from .experiments.paper_defaults import cleat_input, solve_static
-from .repro import cache, claims, collection, section_stages, stages
+from .repro import cache, claims, collection, stages
 from .repro.style import set_style
-from .response.frf import FRFResult, frf_visco
+from .response.frf import frf_visco
 from .response.modal_reduction import ModalReduction, identify_modes, modal_reduction
 from .response.modes import LoadedModes, loaded_modes
 from .response.uff import read_uff58, write_uff58
@@ -44,6 +44,12 @@ from .rm.simulation import SimulationResult, simulate
 from .road import textures
 from .road.input import RoadInput
 from .tire.closed_form import ring_check, ring_frequencies, ring_parameters
+from .tire.cross_section import model as _cross_section_model  # noqa: F401 - registers the model
+from .tire.cross_section import stages as section_stages
+from .tire.frf_file import model as _frf_file_model  # noqa: F401 - registers the model
+from .tire.frf_file.export import export_frf_files
+from .tire.model import Footprint, FRFResult, LoadCase, NotApplicable, TireModel, tire_model
+from .tire.ring import model as _ring_model  # noqa: F401 - registers the model
 from .tire.ring_model import FETModel, build_fet
 from .tire.spec import TireSpec, load_tire
 from .tire.static import StaticState, load_deflection
@@ -54,6 +60,10 @@ __version__ = "0.1.0"
 __all__ = [
     "FETModel",
     "FRFResult",
+    "Footprint",
+    "LoadCase",
+    "NotApplicable",
+    "TireModel",
     "FitSet",
     "LoadedModes",
     "ModalReduction",
@@ -71,6 +81,7 @@ __all__ = [
     "cleat_input",
     "collection",
     "experiments",
+    "export_frf_files",
     "figures",
     "fit_tasselli",
     "frf_visco",
@@ -95,6 +106,7 @@ __all__ = [
     "stages",
     "textures",
     "tire",
+    "tire_model",
     "vector_fit",
     "vehicle",
     "write_uff58",

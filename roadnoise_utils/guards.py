@@ -18,6 +18,8 @@ import warnings
 
 import numpy as np
 
+#: Vertical loads a tire accepts (N): a small car tire to a light truck's (``[operating] vertical_load``).
+LOAD_RANGE = (500.0, 15000.0)
 #: Default limit of one estimated allocation (bytes): a quarter of a 16 GB machine.
 DEFAULT_MEMORY_LIMIT = 4 * 1024**3
 

@@ -16,14 +16,16 @@ from roadnoise_utils.repro.paths import REPO_ROOT
 
 #: Layers in the order the data flows; a module may import from its own layer or an earlier one.
 LAYERS = [
-    ["analysis", "guards", "repro.paths"],
+    ["analysis", "guards", "repro.paths", "repro.cache"],
     ["tire"],
     ["road"],
     ["response"],
+    # the tire models: the pipeline's interface (tire.model) over each model's numerics
+    ["tire.ring.model", "tire.cross_section.model", "tire.cross_section.stages", "tire.frf_file"],
     ["rm"],
     ["vehicle"],
-    ["repro.cache", "repro.style", "repro.inputs"],
-    ["repro.stages", "repro.section_stages"],
+    ["repro.style", "repro.inputs"],
+    ["repro.stages"],
     ["experiments"],
     ["repro.claims", "repro.collection", "repro.evaluators"],
     ["figures"],
@@ -102,8 +104,11 @@ def test_tests_mirror_the_package_folders():
     tests = Path(__file__).parent
     for folder in ("tire", "road", "response", "rm", "vehicle", "experiments", "repro"):
         assert (PACKAGE_DIR / folder).is_dir() and (tests / folder).is_dir(), folder
-        names = {p.stem.removeprefix("test_") for p in (tests / folder).glob("test_*.py")}
-        assert names <= {p.stem for p in (PACKAGE_DIR / folder).glob("*.py")}, folder
+        # test_<module>.py, or test_<module>_contract.py for an interface's contract over its implementations
+        names = {p.stem.removeprefix("test_").removesuffix("_contract") for p in (tests / folder).glob("test_*.py")}
+        modules = {p.stem for p in (PACKAGE_DIR / folder).glob("*.py")}
+        modules |= {p.parent.name for p in (PACKAGE_DIR / folder).glob("*/__init__.py")}  # a model's folder
+        assert names <= modules, folder
 
 
 #: A number in ``e`` format (``2.9e-12``, ``-1.0E-10``) not preceded by ``<`` (``< 1e-10`` is a bound).

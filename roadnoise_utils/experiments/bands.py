@@ -32,7 +32,6 @@ from ..analysis import relative_rms_error
 from ..repro import stages
 from ..repro.inputs import DEFAULT_FREQS
 from ..response.fe_reference import frequency_domain_response
-from ..response.frf import FRFResult
 from ..response.modal_reduction import ModalReduction
 from ..rm.fitting import FitSet
 from ..rm.realisation import assemble_fixed_hub
@@ -40,6 +39,7 @@ from ..rm.simulation import modal_sections
 from ..road.cleat import cleat_input
 from ..road.input import RoadInput, sample_rate_for
 from ..road.kernels import tassellation_error
+from ..tire.model import FRFResult
 from ..vehicle.corner import predicted_psd
 from .cleat import CleatConditions, cleat_conditions, rm_cleat_response
 from .road import RoadTestConditions, road_test_conditions

@@ -12,10 +12,11 @@ from pathlib import Path
 import pandas as pd
 
 from ..analysis import resonance_peaks
-from ..repro import section_stages, stages
+from ..repro import stages
 from ..repro.paths import data_dir, read_toml
 from ..response.modal_reduction import identify_modes
-from ..tire.cross_section import CrossSectionSpec
+from ..tire.cross_section import stages as section_stages
+from ..tire.cross_section.spec import CrossSectionSpec
 from ..tire.spec import TireSpec
 
 #: Suffix of a cross-section tire file built for the same size as a ring tire file (same targets).

@@ -13,10 +13,12 @@ import numpy as np
 import pandas as pd
 
 from .. import guards
-from ..repro import section_stages, stages
-from ..response.frf import FRFResult, frf_visco
+from ..repro import stages
+from ..response.frf import frf_visco
 from ..tire import cavity as cavity_model
 from ..tire import section_cavity
+from ..tire.cross_section import stages as section_stages
+from ..tire.model import FRFResult
 from ..tire.spec import TireSpec
 from .conditions import load_conditions, resolve
 

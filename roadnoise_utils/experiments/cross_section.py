@@ -1,7 +1,7 @@
 """Tables of notebook 09, the cross-section FE tire: its construction, free modes, convergence, the two models.
 
 Each function takes tire names (files in ``data/tires``) or specs and returns a pandas table;
-the heavy stages come from the cache (:mod:`roadnoise_utils.repro.section_stages`).
+the heavy stages come from the cache (:mod:`roadnoise_utils.tire.cross_section.stages`).
 """
 
 from __future__ import annotations
@@ -9,9 +9,10 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ..repro import section_stages, stages
+from ..repro import stages
 from ..response.modal_reduction import identify_modes
-from ..tire.cross_section import LAYER_KINDS, CordLayer, CrossSectionSpec
+from ..tire.cross_section import stages as section_stages
+from ..tire.cross_section.spec import LAYER_KINDS, CordLayer, CrossSectionSpec
 from ..tire.section_dynamics import harmonic_modes
 from ..tire.section_static import SectionTire, section_summary
 from ..tire.static import static_summary

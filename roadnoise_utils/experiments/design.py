@@ -45,7 +45,7 @@ import pandas as pd
 from .. import guards
 from ..repro import stages
 from ..repro.cache import cached
-from ..tire.cross_section import CrossSectionSpec
+from ..tire.cross_section.spec import CrossSectionSpec
 from ..tire.spec import TireSpec
 from ..vehicle.spectra import band_rms
 from . import calibration, cleat, corner, one_sided_cleat, section_contact

@@ -24,7 +24,7 @@ from ..response.fe_reference import band_limited, fe_point_response
 from ..response.one_sided import ContactRun
 from ..rm.simulation import modal_sections
 from ..road.cleat import cleat_profile, point_heights
-from ..tire.cross_section import CrossSectionSpec
+from ..tire.cross_section.spec import CrossSectionSpec
 from ..tire.section_static import SectionStaticState
 from ..tire.spec import TireSpec
 from ..tire.static import DEFLECTION_LIMIT, StaticState

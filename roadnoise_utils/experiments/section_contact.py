@@ -18,10 +18,10 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from ..repro import section_stages
 from ..response.fe_reference import band_limited, frequency_domain_response
 from ..response.one_sided import ContactRun
 from ..road.cleat import cleat_profile, point_heights
+from ..tire.cross_section import stages as section_stages
 from .one_sided_cleat import FrozenCheck, OneSidedCleatTest, OneSidedConditions, one_sided_conditions, peaks_and_decay
 
 #: Cross-section tire of the paper's test.
@@ -71,7 +71,7 @@ def section_frozen_check(tire: str = SECTION_TIRE, *, conditions: OneSidedCondit
 
     Both see the same hat-averaged cleat heights under every static contact point; the
     reference is :func:`.response.fe_reference.frequency_domain_response` of the footprint
-    FRFs (:func:`roadnoise_utils.repro.section_stages.section_footprint`, 1 Hz grid); both are
+    FRFs (:func:`roadnoise_utils.tire.cross_section.stages.section_footprint`, 1 Hz grid); both are
     band-limited to 250 Hz the same way.
     """
     test = one_sided_conditions() if conditions is None else conditions

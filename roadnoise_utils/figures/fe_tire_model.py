@@ -9,8 +9,8 @@ from matplotlib import patheffects
 from matplotlib.collections import LineCollection
 from matplotlib.patches import Circle, Rectangle
 
-from ..response.frf import FRFResult
 from ..response.modes import LoadedModes
+from ..tire.model import FRFResult
 from ..tire.ring_model import UX, UZ, FETModel
 from ..tire.static import StaticState
 from .common import MM, paper_lines

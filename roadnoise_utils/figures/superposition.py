@@ -6,7 +6,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.patches import Rectangle
 
-from ..response.frf import FRFResult
+from ..tire.model import FRFResult
 from ..tire.static import StaticState
 from .common import MM, paper_lines
 

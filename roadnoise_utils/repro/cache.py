@@ -137,11 +137,13 @@ def _module_name(item: Callable | ModuleType) -> str:
     return item.__name__ if isinstance(item, ModuleType) else item.__module__
 
 
-def stage_fingerprint(stage: Callable | str, runs: Iterable[Callable | ModuleType] = ()) -> str:
+def stage_fingerprint(
+    stage: Callable | str, runs: Iterable[Callable | ModuleType] = (), name: str | None = None
+) -> str:
     """Fingerprint of a stage's code: its own source and the modules (with their imports) of what it ``runs``."""
     own = inspect.getsource(stage) if callable(stage) else ""
     modules = tuple(sorted({_module_name(item) for item in runs}))
-    STAGE_MODULES[stage if isinstance(stage, str) else stage.__name__] = modules
+    STAGE_MODULES[name or (stage if isinstance(stage, str) else stage.__name__)] = modules
     return hashlib.sha256((own + code_fingerprint(modules)).encode()).hexdigest()
 
 
@@ -305,6 +307,7 @@ def cached(
     inputs: dict[str, Any],
     compute: Callable[[], T],
     runs: Iterable[Callable | ModuleType] = (),
+    name: str | None = None,
 ) -> T:
     """The result of ``stage`` for ``inputs``, from the cache or computed (and stored).
 
@@ -312,6 +315,9 @@ def cached(
     ----------
     stage : callable or str
         The stage function (its name names the cache files; its source is in the key) or a name.
+    name : str, optional
+        The stage's name instead of the function's (a tire model's method caching a stage of the
+        pipeline, e.g. ``"solve_static"``: :data:`STATS` and the files carry the stage's name).
     inputs : dict
         Every resolved argument the result depends on (numbers, arrays, dataclasses such as
         :class:`~roadnoise_utils.tire.spec.TireSpec`).
@@ -321,11 +327,11 @@ def cached(
         The numerics the stage calls: their modules, and every package module those import,
         are fingerprinted into the key.
     """
-    name = stage if isinstance(stage, str) else stage.__name__
+    name = name or (stage if isinstance(stage, str) else stage.__name__)
     if not cache_enabled():
         STATS[name, "computed"] += 1
         return _timed(name, compute)
-    key = cache_key(name, inputs, stage_fingerprint(stage, runs))
+    key = cache_key(name, inputs, stage_fingerprint(stage, runs, name))
     folder = _usable_folder()
     if folder is not None:
         path = folder / f"{name}-{key}.pkl"

@@ -31,12 +31,13 @@ from ..experiments.whole_car import (
     wheelbase_check,
     whole_car_setup,
 )
-from ..response.frf import FRFResult
 from ..rm.fitting import fit_tasselli
 from ..road.kernels import tassellation_error
+from ..tire.cross_section import stages as section_stages
+from ..tire.model import FRFResult
 from ..vehicle.quarter_car import FrequencyBand, load_vehicle, transmissibility_statistics
 from ..vehicle.spectra import band_rms, power_share
-from . import section_stages, stages
+from . import stages
 from .paths import data_dir, read_toml
 
 #: The tire models, in the report's column order.

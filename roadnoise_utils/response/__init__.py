@@ -10,6 +10,7 @@ quasi-static cleat passage with contact loss); ``one_sided`` is the ring's conta
 ``uff`` writes every FRF set of either tire to a UFF 58 file and reads it back.
 """
 
+from ..tire.model import FRFResult
 from . import (
     fe_reference,
     frf,
@@ -23,7 +24,7 @@ from . import (
     uff,
 )
 from .fe_reference import fe_cleat_response, fe_moving_hub, fe_road_response
-from .frf import FRFResult, frf_visco
+from .frf import frf_visco
 from .loaded import LoadedTire, loaded_tire
 from .modal_reduction import ModalReduction, identify_modes
 from .modes import LoadedModes, loaded_modes

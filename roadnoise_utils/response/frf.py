@@ -18,8 +18,6 @@ frequency cost a quarter-size sparse LU.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
@@ -27,6 +25,7 @@ from tqdm.auto import tqdm
 
 from .. import guards
 from ..tire.cavity import CavityCoupling
+from ..tire.model import FRFResult
 from ..tire.ring_model import FETModel
 from ..tire.static import StaticState
 from ..tire.symmetry import symmetric_basis
@@ -34,46 +33,6 @@ from .loaded import LoadedTire, loaded_tire
 
 #: Highest frequency the FE tire is meant for (Hz); the RM model needs up to 400 Hz, modes to ~800 Hz.
 MAX_FREQUENCY = 2000.0
-
-
-@dataclass(frozen=True, eq=False)
-class FRFResult:
-    """Fixed-hub frequency responses of the loaded tire.
-
-    Attributes
-    ----------
-    freqs : ndarray (n_freq,)
-        Frequencies (Hz).
-    H : ndarray (n_tasselli, n_freq), complex
-        Hub vertical force per unit vertical displacement of each tassello (N/m).
-    H_tot : ndarray (n_freq,), complex
-        Hub vertical force per unit vertical displacement of the whole footprint (N/m).
-    G_H : ndarray (n_freq,), complex
-        Hub vertical force per unit vertical hub displacement, footprint held (N/m); the
-        rim's own inertia is not included (it belongs to the vehicle's unsprung mass).
-    H_points : ndarray (n_contact, n_freq), complex
-        Hub force per unit displacement of each contact point (N/m).
-    method : str
-        How it was computed.
-    """
-
-    freqs: np.ndarray
-    H: np.ndarray
-    H_tot: np.ndarray
-    G_H: np.ndarray
-    H_points: np.ndarray
-    method: str
-
-    @property
-    def H_sum(self) -> np.ndarray:
-        """:math:`\\sum_i H_i` (N/m), the left side of the paper's Eq. (i)."""
-        return self.H.sum(axis=0)
-
-    @property
-    def H_rms(self) -> np.ndarray:
-        """RMS of :math:`|H_i|` over the tasselli (N/m): the resonances the tasselli see, those that
-        cancel in :math:`H_{tot}` included."""
-        return np.sqrt(np.mean(np.abs(self.H) ** 2, axis=0))
 
 
 class HubForceSolver:

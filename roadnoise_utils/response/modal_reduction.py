@@ -58,9 +58,10 @@ from scipy.optimize import least_squares
 
 from ..analysis import resonance_peaks
 from ..tire.mode_shapes import lateral_order, wave_numbers
+from ..tire.model import FRFResult
 from ..tire.ring_model import FETModel
 from ..tire.static import StaticState
-from .frf import FRFResult, HubForceSolver, frf_visco
+from .frf import HubForceSolver, frf_visco
 from .loaded import loaded_tire
 
 

@@ -35,7 +35,8 @@ from scipy.interpolate import CubicSpline
 from threadpoolctl import threadpool_limits
 
 from .. import guards
-from ..tire import cross_section
+from ..tire.cross_section import spec as cross_section
+from ..tire.model import FRFResult
 from ..tire.section_contact import patch_factor
 from ..tire.section_dynamics import harmonic_modes, lateral_mirror, reduce_harmonic, rim_transfer
 from ..tire.section_static import SectionStaticState, SectionTire
@@ -50,7 +51,6 @@ from .footprint_points import (  # noqa: F401 (contact_receptance: the reference
     even_projection,
     lateral_split,
 )
-from .frf import FRFResult
 from .section_cavity_frf import SectionCavityCoupling, cavity_terms, effective_rim, woodbury_solve
 
 #: Harmonics with a mode below ``CUTOFF_FACTOR * f_max`` are reduced with those modes (:func:`footprint_frf`).

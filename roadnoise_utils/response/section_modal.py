@@ -41,9 +41,9 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg as sla
 
+from ..tire.model import FRFResult
 from ..tire.section_dynamics import frozen_laws, parity_bases, tire_mass
 from ..tire.section_static import SectionStaticState, SectionTire
-from .frf import FRFResult
 from .modal_reduction import (
     ModalModel,
     ModalReduction,

@@ -30,8 +30,8 @@ from threadpoolctl import threadpool_limits
 
 from .. import guards
 from ..road.cleat import point_heights
-from ..tire import cross_section
 from ..tire.active_set import held_contact
+from ..tire.cross_section import spec as cross_section
 from ..tire.section_contact import extended_grid, harmonic_flexibility, vertical_compliance
 from ..tire.section_static import SectionStaticState, SectionTire, check_contact_memory
 from ..tire.section_stepping import HarmonicStepper, check_static_start

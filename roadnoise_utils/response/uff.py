@@ -46,7 +46,7 @@ import pyuff
 
 from .. import guards
 from ..repro.paths import atomic_output
-from .frf import FRFResult
+from ..tire.model import FRFResult
 from .section_footprint import FootprintFRF
 
 #: Response node of every set: the hub (wheel centre); also the reference node of ``G_H``.
@@ -200,7 +200,8 @@ def read_uff58(path: str | Path) -> FRFResult:
     -------
     FRFResult
         ``freqs`` (Hz), ``H`` per tassello, ``H_tot``, ``G_H`` and ``H_points`` (N/m; an empty
-        ``(0, n_freq)`` array when the file has no point sets). ``method`` names the file and
+        ``(0, n_freq)`` array when the file has no point sets; ``G_H`` is ``None`` when the file
+        has no hub set: data without a hub transfer). ``method`` names the file and
         the writer's method line. A cross-section tire's ``FootprintFRF`` comes back as this
         equivalent: its per-tassello, whole-footprint and hub FRFs (``transfer`` and ``free_rim``
         are not written).
@@ -211,7 +212,7 @@ def read_uff58(path: str | Path) -> FRFResult:
         No such file.
     ValueError
         Not a readable UFF file; a set that is not a hub-force per displacement FRF (function
-        type, nodes, directions, data types); sets on different frequencies; ``H_tot``, ``G_H`` or
+        type, nodes, directions, data types); sets on different frequencies; ``H_tot`` or
         a tassello missing, or a set twice.
     """
     path = Path(path)
@@ -240,7 +241,7 @@ def read_uff58(path: str | Path) -> FRFResult:
         frfs[node] = np.asarray(dset["data"], complex) * factor
     if freqs is None:
         raise ValueError(f"{path.name}: no UFF 58 data set")
-    missing = [name for name, node in (("H_tot", FOOTPRINT_NODE), ("G_H", HUB_NODE)) if node not in frfs]
+    missing = [] if FOOTPRINT_NODE in frfs else ["H_tot"]
     tasselli = sorted(n for n in frfs if TASSELLO_NODE <= n < POINT_NODE)
     if not tasselli:
         missing.append(f"the tasselli (reference nodes {TASSELLO_NODE}, {TASSELLO_NODE + 1}, ...)")
@@ -260,7 +261,7 @@ def read_uff58(path: str | Path) -> FRFResult:
         freqs=freqs,
         H=np.array([frfs[n] for n in tasselli]),
         H_tot=frfs[FOOTPRINT_NODE],
-        G_H=frfs[HUB_NODE],
+        G_H=frfs.get(HUB_NODE),
         H_points=h_points,
         method=f"read from UFF 58 file {path.name}" + (f" ({method})" if method and method != "NONE" else ""),
     )
@@ -281,17 +282,18 @@ def _checked_rows(result: FRFResult, points: bool) -> tuple[np.ndarray, list[tup
         raise ValueError(
             f"frfs.H has shape {H.shape}: valid is (n_tasselli, {n}) for {n} frequencies, 1 <= n_tasselli <= {MAX_TASSELLI}"
         )
-    rows = []
+    rows = {}
     for name, values in (("H_tot", result.H_tot), ("G_H", result.G_H)):
+        if values is None and name == "G_H":
+            continue  # data without a hub transfer
         values = np.asarray(values)
         if values.shape != (n,):
             raise ValueError(f"frfs.{name} has shape {values.shape}: valid is ({n},), one value per frequency")
         _finite(values, f"frfs.{name}")
-        rows.append(values)
-    out = [
-        ("H_tot: hub force Fz per road displacement, whole footprint", "FOOTPRINT", FOOTPRINT_NODE, rows[0]),
-        ("G_H: hub force Fz per hub displacement, footprint held", "HUB", HUB_NODE, rows[1]),
-    ]
+        rows[name] = values
+    out = [("H_tot: hub force Fz per road displacement, whole footprint", "FOOTPRINT", FOOTPRINT_NODE, rows["H_tot"])]
+    if "G_H" in rows:
+        out.append(("G_H: hub force Fz per hub displacement, footprint held", "HUB", HUB_NODE, rows["G_H"]))
     for i, values in enumerate(H):
         _finite(values, f"frfs.H (tassello {i})")
         out.append(

@@ -30,8 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import guards
-from ..tire.section_static import SectionStaticState
-from ..tire.static import StaticState
+from ..tire.model import Footprint
 from .kernels import strip_kernels
 from .textures import MAX_HEIGHT, RoadProfile, RoadSpectrum, as_spectrum, generate_field, generate_profile
 
@@ -198,7 +197,7 @@ class RoadGrid:
 
 
 def road_grid(
-    static: StaticState,
+    static: Footprint,
     profile,
     speed: float,
     distance: tuple[float, float],
@@ -253,7 +252,7 @@ def road_grid(
 
 
 def profile_input(
-    static: StaticState,
+    static: Footprint,
     profile,
     speed: float,
     distance: tuple[float, float],
@@ -265,7 +264,7 @@ def profile_input(
 
     Parameters
     ----------
-    static : StaticState
+    static : Footprint
         The loaded tire (its tasselli and their shape-function weights).
     profile : callable
         Road height (m). ``profile(s)`` for a road uniform across the width (2D), or
@@ -348,19 +347,15 @@ def _takes_lateral(profile) -> bool:
     return len(required) >= 2 or (len(positional) >= 2 and positional[1].name == "y")
 
 
-#: Loaded states of the two tire models: both carry the tasselli a road flows through.
-LOADED_STATES = (StaticState, SectionStaticState)
-
-
 def _check_static(static) -> None:
-    if not isinstance(static, LOADED_STATES):
+    if not isinstance(static, Footprint):
         raise TypeError(
-            f"static must be the loaded tire of ru.stages.solve_static(tire) (a StaticState or "
-            f"SectionStaticState), got {type(static).__name__}"
+            f"static must be the loaded tire of ru.stages.solve_static(tire) (a Footprint, of any tire model), "
+            f"got {type(static).__name__}"
         )
 
 
-def strip_centres(static: StaticState) -> np.ndarray:
+def strip_centres(static: Footprint) -> np.ndarray:
     """Lateral position of every belt strip (m), indexed by strip number."""
     t = static.tasselli
     centres = np.full(int(t.node_strip.max()) + 1, np.nan)
@@ -372,7 +367,7 @@ def strip_centres(static: StaticState) -> np.ndarray:
 ROAD_MARGIN = 5.0
 
 
-def contact_tracks(static: StaticState) -> np.ndarray:
+def contact_tracks(static: Footprint) -> np.ndarray:
     """Lateral positions (m) of the belt strips in contact: where a 3D road needs its tracks."""
     centres = strip_centres(static)
     return np.unique(centres[np.isfinite(centres)])
@@ -399,7 +394,7 @@ def texture_length(spectrum: RoadSpectrum, travel: float) -> float:
 
 
 def texture_input(
-    static: StaticState,
+    static: Footprint,
     spectrum: RoadSpectrum,
     speed: float,
     duration: float,
@@ -412,7 +407,7 @@ def texture_input(
 
     Parameters
     ----------
-    static : StaticState
+    static : Footprint
         The loaded tire.
     spectrum : RoadSpectrum
         The road's displacement PSD (:mod:`.textures`).

@@ -39,7 +39,8 @@ from .closed_form import ring_check, ring_convergence, ring_frequencies, ring_pa
 from .ring_model import BeltMesh, FETModel, build_fet
 from .rubber import FractionalZener, compound_table
 from .spec import TireSpec, load_tire, tire_table
-from .static import RoadSurface, StaticState, load_deflection, solve_static, static_summary
+from .static import StaticState, load_deflection, solve_static, static_summary
+from .surface import RoadSurface
 from .tasselli import Tasselli
 
 __all__ = [

@@ -27,7 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .cross_section import CrossSectionSpec
+from .cross_section.spec import CrossSectionSpec
 from .section_mesh import Ply, SectionMesh, structured_mesh
 
 

@@ -25,14 +25,15 @@ import pandas as pd
 
 from .. import guards
 from .active_set import active_set
-from .cross_section import CrossSectionSpec
+from .cross_section.spec import CrossSectionSpec
+from .model import Footprint, check_load
 from .section_contact import ContactGrid, contact_grid, harmonic_flexibility, vertical_compliance
 from .section_dynamics import rim_transfer
 from .section_geometry import Meridian, section_mesh
 from .section_mesh import SectionMesh
 from .section_model import HarmonicOperators, harmonic_operators
-from .static import RoadSurface, check_load, make_road
-from .tasselli import FootprintMeasures, Tasselli, tassellate
+from .surface import RoadSurface, make_road
+from .tasselli import Tasselli, tassellate
 
 
 @dataclass(frozen=True, eq=False)
@@ -59,8 +60,8 @@ def build_section_tire(spec: CrossSectionSpec) -> SectionTire:
 
 
 @dataclass(frozen=True, eq=False)
-class SectionStaticState(FootprintMeasures):
-    """The loaded cross-section tire (the :class:`.static.StaticState` of this model).
+class SectionStaticState(Footprint):
+    """The loaded cross-section tire: its :class:`~.model.Footprint` and the contact grid's state.
 
     Arrays over the contact grid are (n_cols, n_rows): ``contact`` (bool), ``contact_force``
     (vertical, N), ``pressure`` (force over the point's tread area, Pa). ``hub_force`` is the
@@ -68,23 +69,12 @@ class SectionStaticState(FootprintMeasures):
     tangent dF/d(delta) with the contact set frozen (N/m).
     """
 
-    road: RoadSurface
-    load: float
-    deflection: float
     contact: np.ndarray
     contact_force: np.ndarray
     pressure: np.ndarray
-    hub_force: float
-    vertical_stiffness: float
-    tasselli: Tasselli
     iterations: int
     grid: ContactGrid = field(repr=False)
     tire: CrossSectionSpec | None = field(default=None, repr=False)
-
-    @property
-    def node_pressure(self) -> np.ndarray:
-        """Contact pressure at each tasselli node, in their order (the order of :attr:`points`) (Pa)."""
-        return self.pressure[self.points]
 
     @property
     def points(self) -> tuple[np.ndarray, np.ndarray]:
@@ -187,6 +177,7 @@ def solve_section_statics(
                 contact=contact,
                 contact_force=forces,
                 pressure=forces / grid.area(),
+                node_pressure=(forces / grid.area())[np.nonzero(contact)],
                 hub_force=_rim_force(tire, forces),
                 vertical_stiffness=float(k_tan),
                 tasselli=section_tasselli(tire, contact),

@@ -21,7 +21,9 @@ from typing import Any
 
 import pandas as pd
 
-from ..repro.paths import data_file, read_toml
+from ..guards import LOAD_RANGE
+from ..repro.paths import data_file
+from .model import load_tire as load_tire  # the reader of every model's tire files
 from .rubber import FractionalZener
 
 
@@ -64,7 +66,7 @@ class Operating:
     """Test conditions the tire is built for."""
 
     inflation_pressure: float = param("Pa", 0.5e5, 5.0e5, "inflation pressure")
-    vertical_load: float = param("N", 500.0, 15000.0, "nominal vertical load")
+    vertical_load: float = param("N", *LOAD_RANGE, "nominal vertical load")
     rim_width: float = param(
         "m",
         0.08,
@@ -367,17 +369,11 @@ def from_dict(data: dict[str, Any], source: str = "<dict>") -> TireSpec:
     return spec
 
 
-#: Tire models a tire file can select with ``[tire] model``.
-MODELS = ("ring", "cross-section")
-
-
-def check_model(data: dict[str, Any], source: str, expected: str | None = None) -> str:
-    """The ``[tire] model`` of a tire file, refused unless it is one of :data:`MODELS` (or ``expected``)."""
+def check_model(data: dict[str, Any], source: str, expected: str) -> str:
+    """The ``[tire] model`` of a tire file, refused unless it is ``expected`` (the parser's own kind)."""
     tire = data.get("tire")
     model = tire.get("model") if isinstance(tire, dict) else None
-    if model not in MODELS:
-        raise ValueError(f"{source}: [tire] model = {model!r}: valid values are {list(MODELS)}")
-    if expected is not None and model != expected:
+    if model != expected:
         raise ValueError(f"{source}: [tire] model = {model!r} where a {expected!r} tire file is expected")
     return model
 
@@ -385,35 +381,6 @@ def check_model(data: dict[str, Any], source: str, expected: str | None = None) 
 def tire_path(name: str | Path) -> Path:
     """Resolve a tire name (``"165_65R14"``) or a path to its TOML file."""
     return data_file(name, "tires", "tire file")
-
-
-def load_tire(name: str | Path) -> TireSpec:
-    """Load and validate a tire definition; ``[tire] model`` selects the tire model.
-
-    Parameters
-    ----------
-    name : str or Path
-        A file stem in ``data/tires/`` (``"165_65R14"``) or a path to a TOML file.
-
-    Returns
-    -------
-    TireSpec or CrossSectionSpec
-        Validated parameters, SI units: a :class:`TireSpec` for ``model = "ring"``, a
-        :class:`.cross_section.CrossSectionSpec` for ``model = "cross-section"``.
-
-    Raises
-    ------
-    ValueError
-        A field is missing, unknown, not a number or outside its physical range; the message
-        names the field, its value and the valid range.
-    """
-    path = tire_path(name)
-    data = read_toml(path)
-    if check_model(data, path.name) == "cross-section":
-        from .cross_section import from_dict as cross_section_from_dict
-
-        return cross_section_from_dict(data, source=path.name)
-    return from_dict(data, source=path.name)
 
 
 def tire_table(spec: TireSpec) -> pd.DataFrame:

@@ -27,54 +27,24 @@ import pandas as pd
 from .. import guards
 from .active_set import active_set
 from .banded import BandedCholesky
+from .model import Footprint, check_load
 from .ring_model import UZ, FETModel
-from .spec import Operating, TireSpec, to_dict
-from .tasselli import FootprintMeasures, Tasselli, tassellate
+from .spec import TireSpec, to_dict
+from .surface import RoadSurface, make_road
+from .tasselli import Tasselli, tassellate
 
-#: Largest drum radius (m): test drums are 0.8-3 m; a radius in millimetres would pass unnoticed.
-MAX_DRUM_RADIUS = 20.0
 #: Nodes within this angle of the bottom of the tire are contact candidates (rad).
 CANDIDATE_ANGLE = np.deg2rad(45.0)
 
 
 @dataclass(frozen=True, eq=False)
-class RoadSurface:
-    """A rigid road under the tire: flat (``drum_radius = inf``) or a drum of radius ``drum_radius`` (m).
-
-    The surface height at the tire's longitudinal coordinate ``x`` is
-    ``z(x) = top - (R - sqrt(R^2 - x^2))`` with ``top`` its highest point (under the axle).
-    """
-
-    kind: str
-    drum_radius: float = np.inf
-
-    def __post_init__(self) -> None:
-        if self.kind not in ("flat", "drum"):
-            raise ValueError(f"road = {self.kind!r}: valid values are 'flat' and 'drum'")
-        if self.kind == "drum":
-            # test drums are 0.8-3 m; 20 m is already nearly flat for a 0.1 m footprint: more is a unit slip
-            guards.real("drum_radius", self.drum_radius, 0.3, MAX_DRUM_RADIUS, lo_open=True, unit="m")
-
-    def drop(self, x: np.ndarray) -> np.ndarray:
-        """How far the surface lies below its top at ``x`` (m)."""
-        if self.kind == "flat":
-            return np.zeros_like(x)
-        r = self.drum_radius
-        return r - np.sqrt(np.maximum(r**2 - x**2, 0.0))
-
-
-@dataclass(frozen=True, eq=False)
-class StaticState(FootprintMeasures):
-    """The inflated tire loaded against the road.
+class StaticState(Footprint):
+    """The inflated ring tire loaded against the road: its :class:`~.model.Footprint` and the FE state.
 
     Attributes
     ----------
-    road : RoadSurface
-        The surface it stands on.
-    load : float
-        Vertical load (N).
-    deflection : float
-        Rise of the road from first touch to equilibrium (m).
+    road, load, deflection, hub_force, vertical_stiffness, tasselli, node_pressure
+        As :class:`~.model.Footprint`.
     contact : ndarray of bool (n_strips, n_elements)
         Tread points in contact.
     contact_force : ndarray (n_strips, n_elements)
@@ -83,36 +53,19 @@ class StaticState(FootprintMeasures):
         Contact force per gross tread area of the point (Pa).
     displacement : ndarray (n_dof,)
         Displacement from the inflated state (m, rad); zero at the fixed hub.
-    hub_force : float
-        Vertical force the tire exerts on the fixed hub (N), positive upward; equals ``load``.
-    vertical_stiffness : float
-        Tangent vertical stiffness at the load with the contact set frozen, dF/d(delta) (N/m).
-    tasselli : Tasselli
-        The footprint divided into blocks.
     iterations : int
         Active-set iterations used.
     tire : TireSpec
         The tire it was solved for (:func:`check_same_tire` refuses another tire's FE model).
     """
 
-    road: RoadSurface
-    load: float
-    deflection: float
     contact: np.ndarray
     contact_force: np.ndarray
     pressure: np.ndarray
     displacement: np.ndarray
-    hub_force: float
-    vertical_stiffness: float
-    tasselli: Tasselli
     iterations: int
     road_height: np.ndarray = field(repr=False)
     tire: TireSpec | None = field(default=None, repr=False)
-
-    @property
-    def node_pressure(self) -> np.ndarray:
-        """Contact pressure at each tasselli node, in their order (Pa)."""
-        return self.pressure[self.tasselli.node_strip, self.tasselli.node_index]
 
 
 @dataclass(eq=False)
@@ -281,12 +234,6 @@ def solve_static(
 DEFLECTION_WARNING, DEFLECTION_LIMIT = 0.35, 0.60
 
 
-def check_load(load: float) -> float:
-    """A vertical load (N) within the range a tire file accepts (``[operating] vertical_load``)."""
-    lo, hi = Operating.__dataclass_fields__["vertical_load"].metadata["range"]
-    return guards.real("load", load, lo, hi, unit="N")
-
-
 def check_deflection(fet: FETModel, deflection: float, load: float) -> None:
     """Refuse a deflection beyond :data:`DEFLECTION_LIMIT` of the section height; warn beyond :data:`DEFLECTION_WARNING`.
 
@@ -304,23 +251,6 @@ def check_deflection(fet: FETModel, deflection: float, load: float) -> None:
         raise ValueError(f"{what}: valid range is <= {DEFLECTION_LIMIT:.0%} (lower the load or raise the pressure)")
     if ratio > DEFLECTION_WARNING:
         guards.warn(f"{what}; beyond {DEFLECTION_WARNING:.0%} the linear model is stretched", stacklevel=4)
-
-
-def make_road(road: str, drum_radius: float | None = None) -> RoadSurface:
-    """A :class:`RoadSurface` from its name and, for ``"drum"``, its radius (m).
-
-    The radius has no default here: the test conditions (``data/conditions``) are resolved by
-    :mod:`roadnoise_utils.experiments`, e.g. ``experiments.cleat_conditions().drum_radius``.
-    """
-    if road not in ("flat", "drum"):
-        raise ValueError(f"road = {road!r}: valid values are 'flat' and 'drum'")
-    if road == "flat":
-        return RoadSurface("flat")
-    if drum_radius is None:
-        raise ValueError(
-            f"drum_radius is required for road='drum': give the drum radius in m, valid range (0.3, {MAX_DRUM_RADIUS:g}]"
-        )
-    return RoadSurface("drum", guards.real("drum_radius", drum_radius, 0.3, MAX_DRUM_RADIUS, lo_open=True, unit="m"))
 
 
 def _state_from_solution(
@@ -341,17 +271,20 @@ def _state_from_solution(
     hub_row = fet.K(0.0, storage_only=True)[mesh.hub_dofs[1]]
     hub_force = -float((hub_row @ u)[0])
     contact = contact_force > 0
+    pressure = contact_force / mesh.tread_area()
+    tasselli = _tasselli_of(fet, contact)
     return StaticState(
         road=problem.road,
         load=load,
         deflection=float(delta),
         contact=contact,
         contact_force=contact_force,
-        pressure=contact_force / mesh.tread_area(),
+        pressure=pressure,
+        node_pressure=pressure[tasselli.node_strip, tasselli.node_index],
         displacement=u,
         hub_force=hub_force,
         vertical_stiffness=float(k_tan),
-        tasselli=_tasselli_of(fet, contact),
+        tasselli=tasselli,
         iterations=iterations,
         road_height=road_height,
         tire=fet.spec,

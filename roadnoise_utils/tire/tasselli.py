@@ -233,11 +233,51 @@ def tassellate(
     # numbering: row by row from the leading edge, left to right
     key = rows * (columns.max() + 1) + columns
     unique_keys, node_tassello = np.unique(key, return_inverse=True)
-    n = unique_keys.size
     widths = np.full(node_x.size, strip_width) if node_width is None else np.asarray(node_width, float)
     area = 0.5 * (node_dx_minus + node_dx_plus) * widths
-    tassello_area = np.bincount(node_tassello, weights=area, minlength=n)
-    weight = area / tassello_area[node_tassello]
+    weight = area / np.bincount(node_tassello, weights=area)[node_tassello]
+    return tasselli_from_nodes(
+        node_strip=node_strip,
+        node_index=node_index,
+        node_x=node_x,
+        node_y=node_y,
+        node_dx_minus=node_dx_minus,
+        node_dx_plus=node_dx_plus,
+        strip_width=strip_width,
+        node_tassello=node_tassello,
+        node_weight=weight,
+        row=unique_keys // (columns.max() + 1),
+        column=unique_keys % (columns.max() + 1),
+        node_width=None if node_width is None else widths,
+    )
+
+
+def tasselli_from_nodes(
+    *,
+    node_strip: np.ndarray,
+    node_index: np.ndarray,
+    node_x: np.ndarray,
+    node_y: np.ndarray,
+    node_dx_minus: np.ndarray,
+    node_dx_plus: np.ndarray,
+    strip_width: float,
+    node_tassello: np.ndarray,
+    node_weight: np.ndarray,
+    row: np.ndarray,
+    column: np.ndarray,
+    node_width: np.ndarray | None = None,
+) -> Tasselli:
+    """:class:`Tasselli` from its contact nodes, each with its tassello and FE weight; the tasselli's
+    centres, areas and outlines follow from the nodes (as :func:`tassellate` defines them).
+
+    ``node_tassello`` numbers the tasselli from 0 (every one holding a node); ``row`` and
+    ``column`` are per tassello. The centre is the weighted centroid of the nodes' shape-function
+    kernels: a hat over ``[x - dx_minus, x + dx_plus]`` has its centroid at
+    ``x + (dx_plus - dx_minus) / 3``, so linear road fields average to the centre.
+    """
+    n = int(node_tassello.max()) + 1
+    widths = np.full(node_x.size, strip_width) if node_width is None else np.asarray(node_width, float)
+    area = 0.5 * (node_dx_minus + node_dx_plus) * widths
 
     def _reduce(values: np.ndarray, fn) -> np.ndarray:
         out = np.full(n, np.nan)
@@ -262,16 +302,14 @@ def tassellate(
         node_dx_plus=node_dx_plus,
         strip_width=strip_width,
         node_tassello=node_tassello,
-        node_weight=weight,
-        row=unique_keys // (columns.max() + 1),
-        column=unique_keys % (columns.max() + 1),
-        # centroid of the shape-function kernel: a hat over [x - dx_minus, x + dx_plus] has its
-        # centroid at x + (dx_plus - dx_minus) / 3, so linear road fields average to the centre
+        node_weight=node_weight,
+        row=row,
+        column=column,
         centre_x=np.bincount(
-            node_tassello, weights=weight * (node_x + (node_dx_plus - node_dx_minus) / 3), minlength=n
+            node_tassello, weights=node_weight * (node_x + (node_dx_plus - node_dx_minus) / 3), minlength=n
         ),
-        centre_y=np.bincount(node_tassello, weights=weight * node_y, minlength=n),
-        area=tassello_area,
+        centre_y=np.bincount(node_tassello, weights=node_weight * node_y, minlength=n),
+        area=np.bincount(node_tassello, weights=area, minlength=n),
         bounds=bounds,
-        node_width=None if node_width is None else widths,
+        node_width=node_width,
     )

@@ -86,7 +86,7 @@ CROSS_SECTION = "165_65R14_cross_section"
 
 def test_the_stages_run_the_tire_model_its_file_names():
     """A cross-section tire file runs its own static and footprint solves behind the same stage
-    functions, and the ring-only stages refuse it before any work."""
+    functions, and a stage whose capability it lacks says so before any work."""
     static = stages.solve_static(CROSS_SECTION)
     assert isinstance(static, SectionStaticState) and stages.model_name(CROSS_SECTION) == "cross-section"
     visco = stages.frf_visco(CROSS_SECTION)
@@ -100,7 +100,6 @@ def test_the_stages_run_the_tire_model_its_file_names():
     assert stages.rim_side_mass(CROSS_SECTION) == 0.0 < stages.rim_side_mass("165_65R14")
     with pytest.raises(ValueError, match="stick = True"):
         stages.frf_visco(CROSS_SECTION, stick=True)
-    with pytest.raises(ValueError, match="loaded_modes runs on ring tires"):
+    with pytest.raises(ru.NotApplicable, match="not applicable: loaded_modes"):
         stages.loaded_modes(CROSS_SECTION)
-    with pytest.raises(ValueError, match="one_sided_run runs on ring tires"):
-        stages.one_sided_run(CROSS_SECTION, 0.0, 0.015, 0.015, "triangle", 1.25, (-0.1, 0.1))
+    assert stages.tire_model(CROSS_SECTION).has("one_sided_cleat")  # stages.one_sided_run runs its stepping

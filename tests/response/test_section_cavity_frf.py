@@ -4,10 +4,10 @@ import numpy as np
 import pytest
 import scipy.sparse.linalg as spla
 
-from roadnoise_utils.repro import section_stages
 from roadnoise_utils.response import section_cavity_frf as cavity_frf
 from roadnoise_utils.response.section_footprint import contact_receptance, footprint_frf, footprint_reductions
 from roadnoise_utils.tire.cavity import waveguide_matrices
+from roadnoise_utils.tire.cross_section import stages as section_stages
 from roadnoise_utils.tire.section_dynamics import rim_transfer, rim_vector
 
 TIRE = "165_65R14_cross_section"

@@ -4,8 +4,9 @@ import numpy as np
 import pytest
 
 from roadnoise_utils.analysis import band_errors
-from roadnoise_utils.repro import section_stages, stages
+from roadnoise_utils.repro import stages
 from roadnoise_utils.response import section_modal
+from roadnoise_utils.tire.cross_section import stages as section_stages
 
 TIRE = "165_65R14_cross_section"
 FREQS = np.arange(0.0, 251.0, 10.0)  # notebook 02's check

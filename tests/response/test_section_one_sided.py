@@ -5,13 +5,13 @@ import pytest
 
 import roadnoise_utils as ru
 from roadnoise_utils.analysis import distinct_peaks
-from roadnoise_utils.repro import section_stages
 from roadnoise_utils.response.section_one_sided import (
     section_dynamic_run,
     section_dynamic_runs,
     section_quasi_static_run,
 )
 from roadnoise_utils.road.cleat import cleat_profile
+from roadnoise_utils.tire.cross_section import stages as section_stages
 
 TIRE = "165_65R14_cross_section"
 

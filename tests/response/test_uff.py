@@ -10,10 +10,10 @@ import pytest
 import pyuff
 
 import roadnoise_utils as ru
-from roadnoise_utils.repro import section_stages
 from roadnoise_utils.response import uff
 from roadnoise_utils.response.frf import FRFResult
 from roadnoise_utils.response.section_footprint import footprint_frf
+from roadnoise_utils.tire.cross_section import stages as section_stages
 
 #: ASCII values are printed with 12 significant digits (%20.11e): each real and imaginary part comes
 #: back within half a unit of the 12th digit, 5e-12 of itself (plus the parse's 1e-16).
@@ -198,8 +198,13 @@ def test_foreign_or_incomplete_files_are_refused(tmp_path):
         ru.read_uff58(tmp_path / "accel.uff")
     sets = pyuff.UFF(str(ru.write_uff58(tmp_path / "frfs.uff", GOOD))).read_sets()
     pyuff.UFF(str(tmp_path / "no_hub.uff")).write_sets([s for s in sets if s.get("ref_node") != 1], mode="add")
-    with pytest.raises(ValueError, match="no set for G_H"):
-        ru.read_uff58(tmp_path / "no_hub.uff")
+    no_hub = ru.read_uff58(tmp_path / "no_hub.uff")  # data without a hub transfer: G_H is None, the rest as written
+    assert no_hub.G_H is None and np.abs(no_hub.H_tot - GOOD.H_tot).max() <= 1e-11 * np.abs(GOOD.H_tot).max()
+    again = ru.read_uff58(ru.write_uff58(tmp_path / "again.uff", no_hub, binary=True))
+    assert again.G_H is None and np.array_equal(again.H, no_hub.H)
+    pyuff.UFF(str(tmp_path / "no_footprint.uff")).write_sets([s for s in sets if s.get("ref_node") != 1000], mode="add")
+    with pytest.raises(ValueError, match="no set for H_tot"):
+        ru.read_uff58(tmp_path / "no_footprint.uff")
     pyuff.UFF(str(tmp_path / "gap.uff")).write_sets([s for s in sets if s.get("ref_node") != 1002], mode="add")
     with pytest.raises(ValueError, match=r"tassello node\(s\) \[1002\]"):
         ru.read_uff58(tmp_path / "gap.uff")

@@ -10,10 +10,11 @@ import pytest
 
 import roadnoise_utils as ru
 from roadnoise_utils.guards import ResourceLimitError
-from roadnoise_utils.repro import section_stages
 from roadnoise_utils.repro.paths import data_dir
-from roadnoise_utils.tire import cross_section, laminate
-from roadnoise_utils.tire.cross_section import CrossSectionSpec
+from roadnoise_utils.tire import laminate
+from roadnoise_utils.tire.cross_section import spec as cross_section
+from roadnoise_utils.tire.cross_section import stages as section_stages
+from roadnoise_utils.tire.cross_section.spec import CrossSectionSpec
 
 NAME = "165_65R14_cross_section"
 
@@ -61,7 +62,7 @@ def _edit(path, value):
 @pytest.mark.parametrize(
     ("path", "value", "message"),
     [
-        (("tire", "model"), "shell", r"\[tire\] model = 'shell': valid values are \['ring', 'cross-section'\]"),
+        (("tire", "model"), "shell", r"\[tire\] model = 'shell' where a 'cross-section' tire file is expected"),
         (("layers", "belt_1", "kind"), "steel", r"\[layers.belt_1\] kind = 'steel': valid kinds"),
         (("layers", "cap", "compound"), "nylon", r"\[layers.cap\] compound = 'nylon' names no \[compounds"),
         (("layers", "tread", "void_ratio"), 0.95, r"\[layers.tread\] void_ratio = 0.95 - is outside its valid range"),

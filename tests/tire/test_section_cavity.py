@@ -4,8 +4,8 @@ import numpy as np
 import pytest
 
 from roadnoise_utils.experiments import cavity as cavity_test
-from roadnoise_utils.repro import section_stages
 from roadnoise_utils.tire import section_cavity
+from roadnoise_utils.tire.cross_section import stages as section_stages
 from roadnoise_utils.tire.section_static import loaded_displacement, solve_section_static, solve_section_statics
 from roadnoise_utils.tire.waveguide import lagrange3, pressure_operators
 

@@ -5,7 +5,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from roadnoise_utils.repro import section_stages
+from roadnoise_utils.tire.cross_section import stages as section_stages
 from roadnoise_utils.tire.section_dynamics import ReducedHarmonic, direct_receptance, lateral_mirror, reduce_harmonic
 from roadnoise_utils.tire.waveguide import harmonic_weight
 

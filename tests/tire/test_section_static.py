@@ -7,7 +7,6 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from roadnoise_utils.repro import section_stages
 from roadnoise_utils.response.footprint_points import lateral_split
 from roadnoise_utils.response.section_footprint import (
     EvenFootprint,
@@ -15,6 +14,7 @@ from roadnoise_utils.response.section_footprint import (
     dynamic_harmonics,
     footprint_frf,
 )
+from roadnoise_utils.tire.cross_section import stages as section_stages
 from roadnoise_utils.tire.section_contact import harmonic_flexibility, vertical_compliance
 from roadnoise_utils.tire.section_dynamics import reduce_harmonic, ritz_error
 from roadnoise_utils.tire.section_static import force_balance, section_summary, solve_section_static

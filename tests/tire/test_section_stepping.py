@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from roadnoise_utils.repro import section_stages
+from roadnoise_utils.tire.cross_section import stages as section_stages
 from roadnoise_utils.tire.section_dynamics import Projected
 from roadnoise_utils.tire.section_stepping import SPECTRAL_RADIUS, GeneralizedAlpha, HarmonicStepper, passive_part
 

@@ -7,7 +7,8 @@ import pytest
 
 import roadnoise_utils as ru
 from roadnoise_utils.tire.ring_model import UZ
-from roadnoise_utils.tire.static import contact_problem, make_road
+from roadnoise_utils.tire.static import contact_problem
+from roadnoise_utils.tire.surface import make_road
 
 
 @pytest.mark.parametrize("road", ["flat", "drum"])

@@ -25,8 +25,8 @@ from typing import Any
 
 import numpy as np
 
-from . import laminate
-from .spec import (
+from .. import laminate
+from ..spec import (
     NO_CAVITY,
     AirCavity,
     Compound,
@@ -181,9 +181,12 @@ class CrossSectionSpec:
         return {name: c.law() for name, c in self.compounds.items()}
 
     def replace(self, **changes: Any) -> CrossSectionSpec:
-        """A copy with some parameters changed (``"layers.tread.youngs_modulus"``), validated again."""
+        """A copy with some parameters changed (``"layers.tread.youngs_modulus"``) or ``"name"``, validated again."""
         data = to_dict(self)
         for key, value in changes.items():
+            if key == "name":
+                data["tire"]["name"] = value
+                continue
             set_parameter(data, key, value)
         return from_dict(data, source=self.source + " (modified)")
 

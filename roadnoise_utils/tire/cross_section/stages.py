@@ -32,29 +32,28 @@ from pathlib import Path
 
 import numpy as np
 
-from ..response import section_cavity_frf as cavity_frf
-from ..response import section_footprint as footprint
-from ..response import section_modal as modal
-from ..response import section_one_sided as one_sided
-from ..response.modal_reduction import ModalReduction
-from ..response.one_sided import ContactRun
-from ..response.section_footprint import FootprintFRF
-from ..road.cleat import cleat_profile
-from ..tire import section_cavity as cavity_module
-from ..tire import section_static as static_module
-from ..tire import section_stepping as stepping
-from ..tire import spec
-from ..tire.cross_section import CrossSectionSpec
-from ..tire.section_static import SectionStaticState, SectionTire, build_section_tire
-from .cache import cached
-from .inputs import DEFAULT_FREQS, loaded_inputs
+from ...repro.cache import cached
+from ...response import section_cavity_frf as cavity_frf
+from ...response import section_footprint as footprint
+from ...response import section_modal as modal
+from ...response import section_one_sided as one_sided
+from ...response.modal_reduction import ModalReduction
+from ...response.one_sided import ContactRun
+from ...response.section_footprint import FootprintFRF
+from ...road.cleat import cleat_profile
+from .. import section_cavity as cavity_module
+from .. import section_static as static_module
+from .. import section_stepping as stepping
+from ..model import DEFAULT_FREQS, LoadCase, load_tire
+from ..section_static import SectionStaticState, SectionTire, build_section_tire
+from .spec import CrossSectionSpec
 
 SectionTireLike = str | Path | CrossSectionSpec
 
 
 def load_section_tire(tire: SectionTireLike) -> CrossSectionSpec:
     """A :class:`CrossSectionSpec` from a name or path, or the spec itself; refuses a ring tire file."""
-    loaded = tire if isinstance(tire, CrossSectionSpec) else spec.load_tire(tire)
+    loaded = tire if isinstance(tire, CrossSectionSpec) else load_tire(tire)
     if not isinstance(loaded, CrossSectionSpec):
         raise ValueError(
             f"tire {tire!r} is a {loaded.model!r} tire file; the cross-section stages need [tire] model = "
@@ -78,7 +77,10 @@ def _no_cavity(tire: SectionTireLike, stage: str) -> None:
 
 
 def _inputs(tire: SectionTireLike, road: str, load: float | None, drum_radius: float | None) -> dict:
-    return loaded_inputs(load_section_tire(tire), road, load, drum_radius)
+    """The cache key's core: the tire file's every value and the load case."""
+    spec = load_section_tire(tire)
+    case = LoadCase.of(road, spec.operating.vertical_load if load is None else load, drum_radius)
+    return {"tire": spec, **case.key()}
 
 
 def section_static(
