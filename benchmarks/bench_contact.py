@@ -114,12 +114,12 @@ def cross_section_rows(tire: str, repeats: int, conditions) -> list[tuple]:
     rows.append((f"{label}: one-sided, quasi-static (1 mm steps)", "-", t, qs.peak_force, len(qs.distance)))
     t, dyn = timed(
         repeats, section_one_sided.section_dynamic_run, built, static, profile, cleat.dynamic_speed, conditions.distance,
-        dt=ru.experiments.section_contact.SECTION_DT, reduced=reduced,
+        dt=ru.tire.cross_section.model.CONTACT_DT, reduced=reduced,
     )  # fmt: skip
     rows.append((f"{label}: one-sided, {cleat.dynamic_kmh:.0f} km/h (raw peak)", "-", t, dyn.peak_force, len(dyn.t)))
     t, pair = timed(
         repeats, section_one_sided.section_dynamic_runs, built, static, profile, cleat.dynamic_speed,
-        conditions.distance, dt=ru.experiments.section_contact.SECTION_DT, frozen=(False, True), reduced=reduced,
+        conditions.distance, dt=ru.tire.cross_section.model.CONTACT_DT, frozen=(False, True), reduced=reduced,
     )  # fmt: skip
     label_pair = f"{label}: one-sided and frozen {cleat.dynamic_kmh:.0f} km/h runs stepped together (raw peaks)"
     rows.append((label_pair, "-", t, pair[0].peak_force, len(pair[0].t)))

@@ -263,13 +263,14 @@ for speed, dt in ((0.1, 5e-3), (0.03, 1e-2)):
 # %%
 # NBVAL_IGNORE_OUTPUT
 # The cross-section tire's runs (cached stages; about a minute on a fresh checkout)
-section = ru.experiments.section_cleat_test(conditions=conditions)
-section_raw = ru.experiments.section_contact.raw_dynamic(conditions=conditions)
-section_frozen = ru.experiments.section_frozen_check(conditions=conditions)
+section_tire_name = f"{tire_name}_cross_section"
+section = ru.experiments.one_sided_cleat_test(section_tire_name, conditions=conditions)
+section_raw = ru.experiments.one_sided_cleat.raw_dynamic(section_tire_name, conditions=conditions)
+section_frozen = ru.experiments.frozen_check(section_tire_name, conditions=conditions)
 section_stepper = ru.tire.section_stepping.HarmonicStepper(
-    ru.section_stages.section_tire(ru.experiments.section_contact.SECTION_TIRE),
+    ru.section_stages.section_tire(section_tire_name),
     section_raw.dt,
-    ru.section_stages.harmonic_reductions(ru.experiments.section_contact.SECTION_TIRE),
+    ru.section_stages.harmonic_reductions(section_tire_name),
 )
 
 # %%

@@ -5,14 +5,13 @@ experiment                     what it runs                                     
 =============================  ================================================  ==========
 :func:`cleat_test`             drum cleat, quasi-static and dynamic, FE check    04
 :func:`one_sided_cleat_test`   the same with one-sided contact of the FE tire    08
-:func:`section_cleat_test`     the same on the cross-section tire (notebook 09)  08
 :func:`moving_hub_check`       RM moving hub vs the FE tire with its hub free    05
 :func:`road_test`              textures flowing through the footprint            06
 :func:`quarter_car`            the corner on the road test, spectra              07
 :func:`calibration_table`      the tire against its calibration targets          01
 :func:`band_extension`         the chain at 0-250 and 0-400 Hz, cleat and road   10
 :func:`whole_car_run`          the whole car on a 3-D road, spectra, checks       11
-:func:`cavity.cavity_frfs`     the ring tire's FRFs with its air cavity           11
+:func:`cavity.cavity_frfs`     the tire's FRFs with and without its air cavity    11
 :func:`sweep`                  a grid or sample of tire designs on dask -> table  12
 =============================  ================================================  ==========
 
@@ -34,7 +33,6 @@ from . import (
     one_sided_cleat,
     paper_defaults,
     road,
-    section_contact,
     whole_car,
 )
 from .bands import BandExtension, BandModel, band_extension
@@ -53,7 +51,6 @@ from .one_sided_cleat import (
     speed_sweep,
 )
 from .road import RoadTest, RoadTestConditions, road_test, road_test_conditions
-from .section_contact import section_cleat_test, section_frozen_check
 
 __all__ = [
     "BandExtension",
@@ -93,10 +90,7 @@ __all__ = [
     "road",
     "road_test",
     "road_test_conditions",
-    "section_cleat_test",
-    "section_contact",
     "whole_car",
-    "section_frozen_check",
     "speed_sweep",
     "SweepError",
     "design",

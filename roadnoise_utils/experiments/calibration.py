@@ -1,4 +1,4 @@
-"""Calibration of a FET against its targets (DESIGN section 2): the "target / obtained" table.
+"""Calibration of a FE tire against its targets: the "target / obtained" table.
 
 Targets live in ``data/calibration/<tire>.toml`` (a range and a source for each quantity);
 the obtained values are computed from the static state and the direct FRF of the tire (the
@@ -12,12 +12,10 @@ from pathlib import Path
 import pandas as pd
 
 from ..analysis import resonance_peaks
-from ..repro import stages
 from ..repro.paths import data_dir, read_toml
+from ..repro.stages import Tire
 from ..response.modal_reduction import identify_modes
-from ..tire.cross_section import stages as section_stages
-from ..tire.cross_section.spec import CrossSectionSpec
-from ..tire.spec import TireSpec
+from ..tire.model import tire_model
 
 #: Suffix of a cross-section tire file built for the same size as a ring tire file (same targets).
 CROSS_SECTION_SUFFIX = "_cross_section"
@@ -37,15 +35,12 @@ def calibration_targets(tire: str) -> dict:
     return read_toml(path)
 
 
-def calibration_values(tire: str | TireSpec | CrossSectionSpec) -> dict[str, float]:
-    """The calibrated quantities of a tire (either model), in the targets' units."""
-    spec = stages.load_tire(tire) if not isinstance(tire, CrossSectionSpec) else tire
-    if isinstance(spec, CrossSectionSpec):
-        static = section_stages.section_static(spec, "flat")
-        frf = section_stages.section_footprint(spec, "flat")
-    else:
-        static = stages.solve_static(spec, "flat")
-        frf = stages.frf_visco(spec, "flat")
+def calibration_values(tire: Tire) -> dict[str, float]:
+    """The calibrated quantities of a tire (any model), in the targets' units: its footprint and its
+    fixed-hub FRFs on the flat road at its file's load (cached)."""
+    model = tire_model(tire)
+    case = model.case("flat")
+    static, frf = model.load(case), model.fixed_hub_frfs(case)
     peaks, _ = resonance_peaks(frf.freqs, frf.H_tot)
     t = static.tasselli
     return {
@@ -59,15 +54,15 @@ def calibration_values(tire: str | TireSpec | CrossSectionSpec) -> dict[str, flo
     }
 
 
-def calibration_table(tire: str | TireSpec | CrossSectionSpec = "165_65R14") -> pd.DataFrame:
+def calibration_table(tire: Tire = "165_65R14") -> pd.DataFrame:
     """Table "quantity / target / obtained / unit / ok / source" of the tire's calibration.
 
     A tire without ``data/calibration/<tire>.toml`` gets the obtained values only (target
     ``-``, ok ``True``): copy and edit a targets file to check your own tire.
     """
-    spec = stages.load_tire(tire)
-    targets = calibration_targets(Path(spec.source.split(" ")[0]).stem)
-    values = calibration_values(spec)
+    model = tire_model(tire)
+    targets = calibration_targets(Path(model.spec.source.split(" ")[0]).stem)
+    values = calibration_values(model)
     rows = []
     for name, value in values.items():
         t = targets.get(name)

@@ -1,25 +1,23 @@
-"""The tire's air cavity: its split under load (both tire models) and the ring tire's fixed-hub FRFs with and without it (notebook 11).
+"""The tire's air cavity: its split under load, its rolling doublet and the fixed-hub FRFs with and without it (notebook 11).
 
 Reads the ``[cavity]`` table of ``data/conditions/whole_car.toml`` once
-(:func:`cavity_conditions`); the numerics are :mod:`roadnoise_utils.tire.cavity` and
-:func:`roadnoise_utils.response.frf.frf_visco` with its ``cavity`` argument.
+(:func:`cavity_conditions`); the tire answers through the capabilities ``cavity`` and
+``rolling_cavity`` of its model (:class:`roadnoise_utils.tire.model.TireModel`), the waveguide's
+numerics are :mod:`roadnoise_utils.tire.cavity`.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import pandas as pd
 
 from .. import guards
 from ..repro import stages
-from ..response.frf import frf_visco
 from ..tire import cavity as cavity_model
-from ..tire import section_cavity
-from ..tire.cross_section import stages as section_stages
-from ..tire.model import FRFResult
-from ..tire.spec import TireSpec
+from ..tire.model import FRFResult, TireModel, tire_model
 from .conditions import load_conditions, resolve
 
 
@@ -68,18 +66,13 @@ def split_against_load(conditions: CavityConditions | None = None) -> pd.DataFra
     """The loaded cavity's first doublet at each load: fore-aft and vertical frequency (Hz), their split,
     the first-order formula's split (module notes of :mod:`.tire.cavity`) and the static deflection (mm).
 
-    Either tire model: the ring tire's belt and sidewall arcs (:func:`.tire.cavity.loaded_area`), or
-    the cross-section tire's inner surface (:func:`.tire.section_cavity.loaded_areas`).
+    Any tire model with the capability ``cavity`` (:meth:`~.tire.model.TireModel.loaded_cavity_areas`:
+    the ring tire's belt and sidewall arcs, the cross-section tire's inner surface).
     """
     test = cavity_conditions() if conditions is None else conditions
-    spec = stages.load_tire(test.tire)
-    if stages.is_cross_section(spec):
-        cav = section_cavity.section_cavity(section_stages.section_tire(spec), test.temperature).cavity
-        states, areas = section_stages.cavity_areas(spec, test.loads)
-    else:
-        cav = cavity_model.ring_tire_cavity(spec, test.temperature)
-        states = [stages.solve_static(spec, load=load) for load in test.loads]
-        areas = [cavity_model.loaded_area(cav, static) for static in states]
+    model = tire_model(test.tire)
+    cav = model.air_cavity(test.temperature)
+    states, areas = model.loaded_cavity_areas(test.loads, test.temperature)
     f1 = float(cavity_model.rigid_torus_frequencies(cav, 1)[0])
     rows = []
     for load, static, area in zip(test.loads, states, areas):
@@ -118,23 +111,23 @@ class CavityFRFs:
 def cavity_frfs(conditions: CavityConditions | None = None, step: float = 1.0) -> CavityFRFs:
     """``H_tot`` and ``G_H`` over the band every ``step`` Hz, without and with the cavity (the tire file's ``[cavity] modes``)."""
     test = cavity_conditions() if conditions is None else conditions
-    spec = stages.load_tire(test.tire)
-    fet, static = stages.build_fet(spec), stages.solve_static(spec)
-    cav = cavity_model.ring_tire_cavity(spec, test.temperature)
-    coupling = cavity_model.ring_cavity_coupling(fet, static, cav, n_modes=spec.cavity.modes)
+    model = tire_model(test.tire).replace(**{"cavity.temperature": test.temperature})
     freqs = np.arange(test.band[0], test.band[1] + 0.5 * step, step)
-    plain = frf_visco(fet, static, freqs, progress=False)
-    with_cavity = frf_visco(fet, static, freqs, progress=False, cavity=coupling)
-    doublet = cavity_model.webster_modes(cav, coupling.area).split()
+    case = model.case("flat")
+    plain = model.replace(**{"cavity.enabled": False}).fixed_hub_frfs(case, freqs)
+    with_cavity = model.replace(**{"cavity.enabled": True}).fixed_hub_frfs(case, freqs)
+    cav = model.air_cavity()
+    _, areas = model.loaded_cavity_areas((model.default_load,))
+    doublet = cavity_model.webster_modes(cav, areas[0]).split()
     return CavityFRFs(plain, with_cavity, float(cavity_model.rigid_torus_frequencies(cav, 1)[0]), doublet)
 
 
-def with_cavity(tire: str) -> TireSpec:
-    """The tire file with its air cavity switched on (``[cavity] enabled = true``), every other value as the file's."""
-    return stages.load_tire(tire).replace(**{"cavity.enabled": True})
+def with_cavity(tire: str | TireModel) -> TireModel:
+    """The tire with its air cavity switched on (``[cavity] enabled = true``), every other value as the file's."""
+    return tire_model(tire).replace(**{"cavity.enabled": True})
 
 
-def chain_check(tire: TireSpec, freqs: np.ndarray) -> float:
+def chain_check(tire: str | TireModel, freqs: np.ndarray) -> float:
     """Largest difference of the RM chain's fixed-hub :math:`H_{tot}` (the fits summed, Eq. 1-3) from the
     direct one, relative to the direct one's peak over ``freqs`` (Hz): how well the fits carry the cavity."""
     fits, direct = stages.fit_tasselli(tire), stages.frf_visco(tire)
@@ -159,17 +152,13 @@ def band_gains(
     return pd.DataFrame(rows).T
 
 
-def _loaded_cavity(spec: TireSpec, temperature: float) -> tuple[cavity_model.Cavity, np.ndarray]:
-    """The cavity of either tire model and its section around the tire loaded at its file's load (m^2)."""
-    if stages.is_cross_section(spec):
-        cav = section_cavity.section_cavity(section_stages.section_tire(spec), temperature).cavity
-        _, areas = section_stages.cavity_areas(spec, (spec.operating.vertical_load,))
-        return cav, areas[0]
-    cav = cavity_model.ring_tire_cavity(spec, temperature)
-    return cav, cavity_model.loaded_area(cav, stages.solve_static(spec))
+def _loaded_cavity(model: TireModel, temperature: float) -> tuple[cavity_model.Cavity, np.ndarray]:
+    """The tire's cavity and its section around the tire loaded at its file's load (m^2)."""
+    _, areas = model.loaded_cavity_areas((model.default_load,), temperature)
+    return model.air_cavity(temperature), areas[0]
 
 
-def flow_speed(spec: TireSpec, cavity: cavity_model.Cavity, speed_kmh: float) -> float:
+def flow_speed(spec: Any, cavity: cavity_model.Cavity, speed_kmh: float) -> float:
     """The air's speed round the waveguide's axis (m/s) on a tire rolling at ``speed_kmh``: it turns with the
     wheel, :math:`U = \\Omega R_{mean}`, :math:`\\Omega = V/R` (the tire's outer radius)."""
     return speed_kmh / 3.6 * cavity.mean_radius / spec.geometry.outer_radius
@@ -180,11 +169,11 @@ def rolling_split(conditions: CavityConditions | None = None) -> pd.DataFrame:
     wheel's rotation frequency, the two frequencies and their separation (Hz), with the closed form
     :math:`2\\sqrt{(\\Delta_0/2)^2 + f_{rot}^2}`. Either tire model (its loaded section at its file's load)."""
     test = cavity_conditions() if conditions is None else conditions
-    spec = stages.load_tire(test.tire)
-    cav, area = _loaded_cavity(spec, test.temperature)
+    model = tire_model(test.tire)
+    cav, area = _loaded_cavity(model, test.temperature)
     rows = []
     for kmh in test.speeds_kmh:
-        flow = flow_speed(spec, cav, kmh)
+        flow = flow_speed(model.spec, cav, kmh)
         rest, rolling = cavity_model.rolling_modes(cav, area, flow)
         f_rot = flow / (2.0 * np.pi * cav.mean_radius)
         rows.append(
@@ -202,7 +191,7 @@ def rolling_split(conditions: CavityConditions | None = None) -> pd.DataFrame:
 
 @dataclass(frozen=True, eq=False)
 class RollingCavityFRFs:
-    """The ring tire's fixed-hub ``H_tot`` and ``G_H`` (n_speeds, n_freq; N/m) with its cavity's air streaming at
+    """The fixed-hub ``H_tot`` and ``G_H`` (n_speeds, n_freq; N/m) with its cavity's air streaming at
     each of ``speeds_kmh``, and the waveguide's rolling doublet at each speed (Hz, (n_speeds, 2))."""
 
     speeds_kmh: tuple[float, ...]
@@ -213,26 +202,18 @@ class RollingCavityFRFs:
 
 
 def rolling_frfs(conditions: CavityConditions | None = None, step: float = 1.0) -> RollingCavityFRFs:
-    """``H_tot`` and ``G_H`` of the ring tire with its rolling cavity (:func:`.tire.cavity.rolling_coupling`) at
+    """``H_tot`` and ``G_H`` of the tire with its rolling cavity (capability ``rolling_cavity``) at
     the conditions' ``rolling_frf_speeds_kmh``, over ``rolling_band`` every ``step`` Hz."""
     test = cavity_conditions() if conditions is None else conditions
-    spec = stages.load_tire(test.tire)
-    if stages.is_cross_section(spec):
-        raise ValueError(
-            f"tire = {test.tire!r}: the rolling cavity's FRFs are built for the ring tire (the cross-section tire's "
-            "coupling keeps its even modes only; its rolling doublet is rolling_split)"
-        )
-    fet, static = stages.build_fet(spec), stages.solve_static(spec)
-    cav = cavity_model.ring_tire_cavity(spec, test.temperature)
-    coupling = cavity_model.ring_cavity_coupling(fet, static, cav, n_modes=spec.cavity.modes)
+    model = tire_model(test.tire).replace(**{"cavity.temperature": test.temperature})
+    model.require("rolling_cavity")
+    cav, area = _loaded_cavity(model, test.temperature)
     freqs = np.arange(test.rolling_band[0], test.rolling_band[1] + 0.5 * step, step)
     h_tot, g_h, doublets = [], [], []
     for kmh in test.rolling_frf_speeds_kmh:
-        flow = flow_speed(spec, cav, kmh)
-        result = frf_visco(
-            fet, static, freqs, progress=False, cavity=cavity_model.rolling_coupling(coupling, cav, flow)
-        )
+        flow = flow_speed(model.spec, cav, kmh)
+        result = model.rolling_cavity_frfs(model.case("flat"), freqs, flow)
         h_tot.append(result.H_tot)
         g_h.append(result.G_H)
-        doublets.append(cavity_model.rolling_modes(cav, coupling.area, flow)[1][:2])
+        doublets.append(cavity_model.rolling_modes(cav, area, flow)[1][:2])
     return RollingCavityFRFs(test.rolling_frf_speeds_kmh, freqs, np.array(h_tot), np.array(g_h), np.array(doublets))

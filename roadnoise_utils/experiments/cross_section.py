@@ -9,13 +9,12 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ..repro import stages
 from ..response.modal_reduction import identify_modes
 from ..tire.cross_section import stages as section_stages
 from ..tire.cross_section.spec import LAYER_KINDS, CordLayer, CrossSectionSpec
+from ..tire.model import tire_model
 from ..tire.section_dynamics import harmonic_modes
 from ..tire.section_static import SectionTire, section_summary
-from ..tire.static import static_summary
 
 
 def layer_table(spec: CrossSectionSpec) -> pd.DataFrame:
@@ -95,19 +94,9 @@ def model_comparison(ring: str = "165_65R14", cross: str = "165_65R14_cross_sect
     """The two tire models of one tire side by side: size, statics, first vertical mode."""
     out = {}
     for label, name in (("ring", ring), ("cross-section", cross)):
-        spec = stages.load_tire(name)
-        if isinstance(spec, CrossSectionSpec):
-            built = section_stages.section_tire(spec)
-            dof = f"{built.mesh.n_dof} x {spec.mesh.harmonics + 1} harmonics"
-            static = section_stages.section_static(spec)
-            frf = section_stages.section_footprint(spec)
-            summary = section_summary(static)
-        else:
-            built = stages.build_fet(spec)
-            dof = f"{built.n_dof}"
-            static = stages.solve_static(spec)
-            frf = stages.frf_visco(spec)
-            summary = static_summary({"x": static})["x"]
+        model = tire_model(name)
+        case = model.case("flat")
+        dof, summary, frf = model.degrees_of_freedom(), model.load(case).summary(), model.fixed_hub_frfs(case)
         modes = identify_modes(frf.freqs, frf.H_tot)
         out[label] = {
             "DOF": dof,

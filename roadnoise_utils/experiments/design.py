@@ -16,8 +16,8 @@ output               computed by                                                
 ``K_v``, footprint   :func:`roadnoise_utils.repro.stages.solve_static` (flat)     ~0.1 s
 ``f1``, ``zeta1``    :func:`.calibration.calibration_values` (direct FRF, flat)   ~2 s
 ``cleat``            :func:`.cleat.cleat_test` (linear RM chain on the drum)       ~3 s more
-``one_sided``        :func:`.one_sided_cleat.one_sided_cleat_test` (ring) or      ~20 s more
-                     :func:`.section_contact.section_cleat_test` (cross-section)
+``one_sided``        :func:`.one_sided_cleat.one_sided_cleat_test` (as the model    ~20 s more
+                     runs it: :meth:`.tire.model.TireModel.one_sided_setup`)
 ``hub_acceleration`` :func:`.corner.corner_setup` on the vehicle file, the        ~1 s more
                      predicted hub PSD on the road test's texture, its band RMS
 ===================  ===========================================================  ===========
@@ -45,15 +45,14 @@ import pandas as pd
 from .. import guards
 from ..repro import stages
 from ..repro.cache import cached
-from ..tire.cross_section.spec import CrossSectionSpec
-from ..tire.spec import TireSpec
 from ..vehicle.spectra import band_rms
-from . import calibration, cleat, corner, one_sided_cleat, section_contact
+from . import calibration, cleat, corner, one_sided_cleat
 from .cleat import CleatConditions, cleat_conditions
 from .one_sided_cleat import OneSidedConditions, one_sided_conditions
 from .road import RoadTestConditions, road_test_conditions
 
-Spec = TireSpec | CrossSectionSpec
+#: A validated tire file of any registered model (:func:`roadnoise_utils.tire.model.load_tire`).
+Spec = Any
 
 #: Each output -> the table columns it gives (SI units in the names).
 OUTPUTS: dict[str, tuple[str, ...]] = {
@@ -196,7 +195,7 @@ class Design:
         Its row in the sweep's table (0, 1, ...).
     overrides : dict of str to float
         The overridden parameters (dotted name -> value, SI units).
-    spec : TireSpec or CrossSectionSpec
+    spec : Spec
         The tire file with the overrides, validated.
     """
 
@@ -317,10 +316,7 @@ def design_outputs(spec: Spec, outputs: Sequence[str], conditions: SweepConditio
         row["cleat_quasi_static_peak (N)"] = test.quasi_static.peak_force
         row["cleat_dynamic_peak (N)"] = test.dynamic.peak_force
     if "one_sided" in outputs:
-        if isinstance(spec, CrossSectionSpec):
-            contact = section_contact.section_cleat_test(spec, conditions=conditions.one_sided)
-        else:
-            contact = one_sided_cleat.one_sided_cleat_test(spec, conditions=conditions.one_sided)
+        contact = one_sided_cleat.one_sided_cleat_test(spec, conditions=conditions.one_sided)
         row["one_sided_quasi_static_peak (N)"] = contact.quasi_static.peak_force
         row["one_sided_dynamic_peak (N)"] = contact.dynamic.peak_force
     if "hub_acceleration" in outputs:

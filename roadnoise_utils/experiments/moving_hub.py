@@ -17,9 +17,9 @@ import numpy as np
 from .. import guards
 from ..analysis import relative_rms_error
 from ..repro import stages
-from ..response.fe_reference import fe_moving_hub
 from ..rm.fitting import FitSet
 from ..rm.moving_hub import released_hub, rm_moving_hub
+from ..tire.model import tire_model
 from ..tire.spec import TireSpec
 from .conditions import load_conditions, resolve
 
@@ -105,14 +105,16 @@ def moving_hub_check(
         raise TypeError(
             f"suspension must be a Suspension(mass, stiffness, damping), got {type(hub_suspension).__name__}"
         )
-    spec = stages.load_tire(tire)
+    model = tire_model(tire)
+    model.require("hub_transfer")
     values = (hub_suspension.mass, hub_suspension.stiffness, hub_suspension.damping)
-    fits, hub = stages.fit_tasselli(spec), stages.fit_hub(spec)
-    own_mass = stages.rim_side_mass(spec)
-    if stages.is_cross_section(spec):  # the direct two-port: H_tot and G_H of the harmonic solve
-        direct = stages.frf_visco(spec, freqs=freqs)
+    fits, hub = stages.fit_tasselli(model), stages.fit_hub(model)
+    own_mass = model.rim_side_mass()
+    case = model.case("flat")
+    if model.has("released_hub"):
+        fe_hub, fe_force = model.released_hub(case, freqs, *values)
+    else:  # the direct two-port: H_tot and G_H of the model's fixed-hub solve, closed on the hub
+        direct = model.fixed_hub_frfs(case, freqs)
         fe_hub, fe_force = released_hub(freqs, direct.H_tot, direct.G_H, values[0] + own_mass, *values[1:])
-    else:
-        fe_hub, fe_force = fe_moving_hub(stages.build_fet(spec), stages.solve_static(spec), freqs, *values)
     rm_hub, rm_force = rm_moving_hub(fits, hub, freqs, *values, tire_hub_mass=own_mass)
-    return MovingHubCheck(spec, hub_suspension, freqs, fe_hub, fe_force, rm_hub, rm_force, fits, hub)
+    return MovingHubCheck(model.spec, hub_suspension, freqs, fe_hub, fe_force, rm_hub, rm_force, fits, hub)

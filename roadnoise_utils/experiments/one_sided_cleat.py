@@ -12,7 +12,8 @@ and is compared with the *measured* values; the linear chain stays compared with
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from typing import Any
 
 import numpy as np
 import pandas as pd
@@ -20,19 +21,19 @@ import pandas as pd
 from .. import guards
 from ..analysis import damped_components, force_peaks, relative_rms_error
 from ..repro import stages
-from ..response.fe_reference import band_limited, fe_point_response
+from ..repro.stages import Tire
+from ..response.fe_reference import band_limited
 from ..response.one_sided import ContactRun
 from ..rm.simulation import modal_sections
-from ..road.cleat import cleat_profile, point_heights
-from ..tire.cross_section.spec import CrossSectionSpec
-from ..tire.section_static import SectionStaticState
+from ..tire.model import ContactSetup, Footprint, tire_model
 from ..tire.spec import TireSpec
-from ..tire.static import DEFLECTION_LIMIT, StaticState
 from .cleat import DECAY_COMPONENTS, PAPER_TIRE, CleatConditions, cleat_conditions, in_band, run_cleat
 from .conditions import load_conditions, resolve
 
 #: Largest mesh the one-sided runs accept (elements around the circumference).
 MAX_ELEMENTS = 2400
+#: Record of the band-limiting FFT (s): long enough for the decay.
+RECORD = 1.0
 
 
 @dataclass(frozen=True)
@@ -96,24 +97,24 @@ class OneSidedCleatTest:
 
     Attributes
     ----------
-    tire : TireSpec or CrossSectionSpec
-        The tire (the ring with the refined mesh).
+    tire : spec
+        The validated tire file the runs used (the ring's with its refined mesh).
     conditions : OneSidedConditions
         The resolved conditions.
-    static : StaticState or SectionStaticState
+    static : Footprint
         The tire loaded on the drum.
     quasi_static, dynamic : ContactRun
         The base curve (contact solves) and the run at the dynamic speed (time stepping; on the
-        cross-section tire band-limited to 250 Hz, :mod:`.section_contact`).
+        cross-section tire band-limited to 250 Hz: :class:`~roadnoise_utils.tire.model.ContactSetup`).
     peaks : pandas.DataFrame
         The two largest peaks of the dynamic run while the cleat touches the tire.
     decay : pandas.DataFrame
         Damped components of the free decay after the cleat has left (largest first).
     """
 
-    tire: TireSpec | CrossSectionSpec
+    tire: Any
     conditions: OneSidedConditions
-    static: StaticState | SectionStaticState
+    static: Footprint
     quasi_static: ContactRun
     dynamic: ContactRun
     peaks: pd.DataFrame
@@ -141,56 +142,43 @@ class OneSidedCleatTest:
         return pd.DataFrame({"one-sided contact": rows}).rename_axis("quantity")
 
 
-def refined_tire(tire: str | TireSpec, n_elements: int) -> TireSpec:
-    """The tire with ``n_elements`` around the circumference (everything else unchanged)."""
-    spec = stages.load_tire(tire)
-    if spec.mesh.n_elements == n_elements:
-        return spec
-    return spec.replace(**{"mesh.n_elements": n_elements}, name=f"{spec.name} ({n_elements} elements)")
+def refined_tire(tire: Tire, n_elements: int) -> TireSpec:
+    """The ring tire with ``n_elements`` around the circumference (everything else unchanged)."""
+    return tire_model(tire).refined(n_elements).spec
 
 
-def check_cleat_height(static: StaticState, height: float) -> None:
-    """Refuse a cleat the tire cannot envelop; warn when it is taller than the static deflection.
-
-    Over the cleat the tire deflects by its static deflection plus the cleat height; past
-    :data:`~roadnoise_utils.tire.static.DEFLECTION_LIMIT` of the section height it would
-    bottom on the rim, which the model does not know.
-    """
-    g = static.tire.geometry
-    section = g.section_width * g.aspect_ratio
-    room = DEFLECTION_LIMIT * section - static.deflection
-    if height > room:
-        raise ValueError(
-            f"cleat height = {height * 1e3:.1f} mm: valid range is <= {room * 1e3:.1f} mm, what the tire can envelop "
-            f"over its {static.deflection * 1e3:.1f} mm static deflection ({DEFLECTION_LIMIT:.0%} of the "
-            f"{section * 1e3:.0f} mm section height in all)"
-        )
-    if height > static.deflection:
-        guards.warn(
-            f"cleat height = {height * 1e3:.1f} mm exceeds the static deflection ({static.deflection * 1e3:.1f} mm): "
-            "the whole footprint lifts off the drum over the cleat",
-            stacklevel=3,
-        )
-
-
-def _run(spec: TireSpec, test: OneSidedConditions, speed: float, distance, frozen: bool = False) -> ContactRun:
+def _run(setup: ContactSetup, test: OneSidedConditions, speed: float, distance, frozen: bool = False) -> ContactRun:
     c = test.cleat
     return stages.one_sided_run(
-        spec, speed, c.height, c.base, c.shape, c.drum_radius, distance, frozen=frozen, step=test.quasi_static_step
-    )
+        setup.model, speed, c.height, c.base, c.shape, c.drum_radius, distance,
+        frozen=frozen, step=setup.quasi_static_step, dt=setup.dt,
+    )  # fmt: skip
 
 
-def one_sided_cleat_test(
-    tire: str | TireSpec = PAPER_TIRE, *, conditions: OneSidedConditions | None = None
-) -> OneSidedCleatTest:
-    """The cleat test with one-sided contact: quasi-static contact solves and the dynamic run (cached)."""
+def in_model_band(setup: ContactSetup, run: ContactRun) -> ContactRun:
+    """The run with its hub force band-limited to the model's compared band (zero phase, over a
+    :data:`RECORD` s record), or as stepped where the model compares it raw."""
+    if setup.band is None:
+        return run
+    n_fft = max(run.t.size, int(round(RECORD / run.dt)))
+    return replace(run, hub_force=band_limited(run.hub_force, run.dt, setup.band, n_fft=n_fft))
+
+
+def one_sided_cleat_test(tire: Tire = PAPER_TIRE, *, conditions: OneSidedConditions | None = None) -> OneSidedCleatTest:
+    """The cleat test with one-sided contact: quasi-static contact solves and the dynamic run (cached),
+    as the tire's model runs it (:meth:`~roadnoise_utils.tire.model.TireModel.one_sided_setup`)."""
     test = one_sided_conditions() if conditions is None else conditions
-    spec = refined_tire(tire, test.n_elements)
-    static = stages.solve_static(spec, "drum", drum_radius=test.cleat.drum_radius)
-    check_cleat_height(static, test.cleat.height)
-    quasi = _run(spec, test, 0.0, test.distance)
-    dynamic = _run(spec, test, test.cleat.dynamic_speed, test.distance)
-    return OneSidedCleatTest(spec, test, static, quasi, dynamic, *peaks_and_decay(dynamic))
+    setup = tire_model(tire).one_sided_setup(test)
+    static = setup.model.load(setup.model.case("drum", drum_radius=test.cleat.drum_radius))
+    quasi = _run(setup, test, 0.0, setup.quasi_static_distance)
+    dynamic = in_model_band(setup, _run(setup, test, test.cleat.dynamic_speed, test.distance))
+    return OneSidedCleatTest(setup.model.spec, test, static, quasi, dynamic, *peaks_and_decay(dynamic))
+
+
+def raw_dynamic(tire: Tire = PAPER_TIRE, *, conditions: OneSidedConditions | None = None) -> ContactRun:
+    """The dynamic one-sided run as stepped (not band-limited)."""
+    test = one_sided_conditions() if conditions is None else conditions
+    return _run(tire_model(tire).one_sided_setup(test), test, test.cleat.dynamic_speed, test.distance)
 
 
 def peaks_and_decay(run: ContactRun) -> tuple[pd.DataFrame, pd.DataFrame]:
@@ -205,19 +193,19 @@ def peaks_and_decay(run: ContactRun) -> tuple[pd.DataFrame, pd.DataFrame]:
     return peaks, decay
 
 
-def speed_sweep(tire: str | TireSpec = PAPER_TIRE, *, conditions: OneSidedConditions | None = None) -> pd.DataFrame:
+def speed_sweep(tire: Tire = PAPER_TIRE, *, conditions: OneSidedConditions | None = None) -> pd.DataFrame:
     """Peak hub force against speed: the linear RM chain (paper's method) and one-sided contact (N)."""
     test = one_sided_conditions() if conditions is None else conditions
     c = test.cleat
-    spec = stages.load_tire(tire)
+    model = tire_model(tire)
     drum = {"road": "drum", "drum_radius": c.drum_radius}
-    sections = modal_sections(stages.assemble_fixed_hub(spec, **drum))
-    static = stages.solve_static(spec, **drum)
-    refined = refined_tire(spec, test.n_elements)
+    sections = modal_sections(stages.assemble_fixed_hub(model, **drum))
+    static = stages.solve_static(model, **drum)
+    setup = model.one_sided_setup(test)
     rows = {}
     for kmh in test.sweep_kmh:
         linear = run_cleat(sections, static, kmh / 3.6, c.height, c.base, c.shape, test.sweep_distance, dynamic=False)
-        contact = _run(refined, test, kmh / 3.6, test.sweep_distance)
+        contact = in_model_band(setup, _run(setup, test, kmh / 3.6, test.sweep_distance))
         rows[kmh] = {
             "linear chain (N)": linear.peak_force,
             "one-sided contact (N)": contact.peak_force,
@@ -258,25 +246,21 @@ class FrozenCheck:
 
 
 def frozen_check(
-    tire: str | TireSpec = PAPER_TIRE, *, conditions: OneSidedConditions | None = None, duration: float = 1.0
+    tire: Tire = PAPER_TIRE, *, conditions: OneSidedConditions | None = None, duration: float = 1.0
 ) -> FrozenCheck:
     """Run the dynamic cleat passage with the contact frozen and compare it with the FE frequency domain.
 
     On the tire's own mesh. The frequency-domain reference
-    (:func:`roadnoise_utils.response.fe_reference.fe_point_response`, footprint sliding freely
-    as the frictionless contact) sees the same hat-averaged heights under every contact point.
+    (:meth:`~roadnoise_utils.tire.model.TireModel.frozen_reference`: the FE solve of the ring, the
+    footprint FRFs of the cross-section) sees the same hat-averaged heights under every contact
+    point; both are band-limited the same way.
     """
     test = one_sided_conditions() if conditions is None else conditions
     c = test.cleat
-    spec = stages.load_tire(tire)
-    static = stages.solve_static(spec, "drum", drum_radius=c.drum_radius)
-    run = _run(spec, test, c.dynamic_speed, test.distance, frozen=True)
-    t = static.tasselli
-    heights = point_heights(
-        t.node_x, t.node_dx_minus, t.node_dx_plus, cleat_profile(c.height, c.base, c.shape), run.distance
-    )
-    fet = stages.build_fet(spec)
-    reference = fe_point_response(fet, static, heights, run.dt, duration=duration, stick=False)
-    time_domain = band_limited(run.hub_force, run.dt, n_fft=max(run.t.size, int(round(duration / run.dt))))
+    model = tire_model(tire)
+    setup = ContactSetup(model, test.distance, test.quasi_static_step, model.contact_dt, None)
+    run = _run(setup, test, c.dynamic_speed, test.distance, frozen=True)
+    case = model.case("drum", drum_radius=c.drum_radius)
+    time_domain, reference = model.frozen_reference(case, run, (c.height, c.base, c.shape), duration)
     window = run.distance <= 0.3
     return FrozenCheck(run, time_domain, reference, window)

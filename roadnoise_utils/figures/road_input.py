@@ -22,11 +22,18 @@ def plot_road_spectra(
     for name, g0 in iso_classes.items():
         ax.loglog(n, g0 * (n / 0.1) ** -2.0, color="0.8", lw=0.8)
         ax.text(n[0] * 1.05, g0 * (n[0] / 0.1) ** -2.0, name, fontsize=7, color="0.5", va="bottom")
+    floor = np.inf
     for (name, spectrum), colour in zip(spectra.items(), ["tab:red", "tab:blue", "tab:green"]):
-        ax.loglog(n, spectrum.psd(n), lw=2, color=colour, label=f"{name} (target)")
+        target = spectrum.psd(n)
+        floor = min(floor, target[target > 0].min())
+        ax.loglog(n, target, lw=2, color=colour, label=f"{name} (target)")
         if measured and name in measured:
             nm, gm = measured[name]
-            ax.loglog(nm[1:], gm[1:], lw=0.8, color=colour, alpha=0.7, label=f"{name} (generated, Welch)")
+            shown = (nm > 0) & (nm <= n.max())
+            ax.loglog(nm[shown], gm[shown], lw=0.8, color=colour, alpha=0.7, label=f"{name} (generated, Welch)")
+    # the targets' band sets the scale, not the estimate's leakage past the shortest wavelength
+    top = max(iso_classes.values()) * (n[0] / 0.1) ** -2.0
+    ax.set_ylim(floor / 100.0, top * 10.0)
     ax.axvline(1 / 0.05, color="k", ls=":", lw=0.8)
     ax.text(1 / 0.05, ax.get_ylim()[1], " 5 cm", va="top", fontsize=8)
     ax.set_xlabel("wavenumber n (cycles/m)")

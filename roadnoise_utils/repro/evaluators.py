@@ -22,7 +22,6 @@ from ..experiments.corner import PAPER_CAR, corner_setup, quarter_car_spectra
 from ..experiments.moving_hub import moving_hub_check
 from ..experiments.one_sided_cleat import OneSidedCleatTest, one_sided_cleat_test
 from ..experiments.road import road_test_conditions
-from ..experiments.section_contact import section_cleat_test
 from ..experiments.whole_car import (
     WholeCarSetup,
     heavy_body_difference,
@@ -72,9 +71,7 @@ def _cleat(model: str) -> CleatTest:
 
 @functools.cache
 def _contact(model: str) -> OneSidedCleatTest:
-    if model == "ring":
-        return one_sided_cleat_test(tire_of(model))
-    return section_cleat_test(tire_of(model))
+    return one_sided_cleat_test(tire_of(model))
 
 
 @functools.cache

@@ -32,14 +32,18 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from types import ModuleType
-from typing import Any, ClassVar
+from typing import TYPE_CHECKING, Any, ClassVar
 
 import numpy as np
+import pandas as pd
 
 from .. import guards
 from ..repro.paths import data_file, read_toml
 from .surface import RoadSurface, make_road
 from .tasselli import FootprintMeasures, Tasselli
+
+if TYPE_CHECKING:
+    from .cavity import Cavity
 
 #: Default frequency grid of the direct sweeps: 0-400 Hz every 1 Hz (paper: up to 250 Hz,
 #: "easily improved to 400 Hz").
@@ -50,9 +54,11 @@ CAPABILITIES = {
     "hub_transfer": "hub transfer function G_H (the moving hub, the quarter car and the whole car need it)",
     "modal_reduction": "modal reduction of the paper's Fig. 4 (identified damping, frozen moduli, modal H_i)",
     "loaded_modes": "eigenmodes of the loaded FE tire",
+    "released_hub": "FE solve of the tire with its hub released on a suspension (the moving hub's reference)",
     "direct_response": "FE reference of a road input (the hub force straight from the FE model, no fit)",
     "one_sided_cleat": "cleat test with one-sided contact (the tread lifting off the drum)",
     "cavity": "air cavity coupled to the tire",
+    "rolling_cavity": "fixed-hub FRFs with the cavity's air streaming round the rolling wheel",
 }
 
 
@@ -133,6 +139,31 @@ class Footprint(FootprintMeasures):
     tasselli: Tasselli
     node_pressure: np.ndarray
 
+    def force_balance(self) -> float:
+        """Largest relative imbalance of the load against what carries it (-): the hub force here; a
+        model with contact forces checks them too. Zero up to round-off on an FE model's solve."""
+        return abs(self.hub_force / self.load - 1.0)
+
+    def summary(self) -> pd.Series:
+        """Key numbers in the paper's units, the same rows for every model (a model may add rows)."""
+        t = self.tasselli
+        return pd.Series(
+            {
+                "load (N)": self.load,
+                "deflection (mm)": self.deflection * 1e3,
+                "vertical stiffness, tangent (N/mm)": self.vertical_stiffness / 1e3,
+                "vertical stiffness, secant (N/mm)": self.load / self.deflection / 1e3,
+                "footprint length (mm)": self.footprint_length * 1e3,
+                "footprint width (mm)": self.footprint_width * 1e3,
+                "contact area (cm^2)": self.contact_area * 1e4,
+                "mean contact pressure (MPa)": self.mean_pressure / 1e6,
+                "peak contact pressure (MPa)": self.node_pressure.max() / 1e6,
+                "contact points": int(t.node_x.size),
+                "tasselli": t.n,
+                "force balance (contact and hub = load to 1e-9)": bool(self.force_balance() < 1e-9),
+            }
+        )
+
 
 @dataclass(frozen=True, eq=False)
 class FRFResult:
@@ -176,6 +207,32 @@ class FRFResult:
         return np.sqrt(np.mean(np.abs(self.H) ** 2, axis=0))
 
 
+@dataclass(frozen=True)
+class ContactSetup:
+    """How a model runs the cleat test with one-sided contact (capability ``one_sided_cleat``).
+
+    Attributes
+    ----------
+    model : TireModel
+        The model the runs use (the ring refined along its circumference).
+    quasi_static_distance : (float, float)
+        Travel of the quasi-static passage (m).
+    quasi_static_step : float
+        Travel between its contact solves (m).
+    dt : float or None
+        Time step of the dynamic runs (s); None: the model's own choice.
+    band : float or None
+        The dynamic hub force is compared low-passed to this band (Hz; the paper's 250 Hz), None:
+        as stepped.
+    """
+
+    model: TireModel
+    quasi_static_distance: tuple[float, float]
+    quasi_static_step: float
+    dt: float | None
+    band: float | None
+
+
 class TireModel(ABC):
     """One implementation of the tire for the RM pipeline (a tire file's ``[tire] model``).
 
@@ -189,6 +246,8 @@ class TireModel(ABC):
     kind: ClassVar[str] = ""
     #: The optional capabilities (keys of :data:`CAPABILITIES`) the model has.
     capabilities: ClassVar[frozenset[str]] = frozenset()
+    #: Time step of its one-sided dynamic runs (s); None: the model's own choice.
+    contact_dt: ClassVar[float | None] = None
 
     def __init__(self, spec: Any):
         if not dataclasses.is_dataclass(spec) or getattr(spec, "model", None) != self.kind:
@@ -241,6 +300,10 @@ class TireModel(ABC):
     def rim_side_mass(self) -> float:
         """The FE tire's mass the hub carries besides :math:`G_H` (kg), added to the unsprung mass (Eq. 5-7)."""
 
+    def degrees_of_freedom(self) -> str:
+        """The size of the model's FE problem, as printed in the models' comparison."""
+        return "-"
+
     @abstractmethod
     def frf_runs(self) -> tuple[Callable | ModuleType, ...]:
         """The numerics behind :meth:`load` and :meth:`fixed_hub_frfs` (the fingerprint of stages built on them)."""
@@ -265,6 +328,43 @@ class TireModel(ABC):
         """Raise :class:`NotApplicable` unless the model has ``capability``."""
         if not self.has(capability):
             raise NotApplicable(self.kind, capability)
+
+    def released_hub(
+        self, case: LoadCase, freqs: np.ndarray, mass: float, stiffness: float, damping: float
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """The FE tire solved with its hub released on a suspension (``mass`` kg, ``stiffness`` N/m,
+        ``damping`` N s/m): the hub's displacement per unit road (-) and the road force per unit road
+        (N/m) at ``freqs`` (Hz), the reference of the moving-hub model (paper Eq. 5-7)."""
+        raise NotApplicable(self.kind, "released_hub")
+
+    def one_sided_setup(self, conditions: Any) -> ContactSetup:
+        """How this model runs the one-sided cleat test of ``conditions``
+        (:class:`roadnoise_utils.experiments.one_sided_cleat.OneSidedConditions`)."""
+        raise NotApplicable(self.kind, "one_sided_cleat")
+
+    def frozen_reference(
+        self, case: LoadCase, run: Any, cleat: tuple[float, float, str], duration: float
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """A dynamic cleat run with its contact frozen (``run``, a ``ContactRun``) against the model's
+        frequency-domain solve of the same point inputs: both hub forces (N), band-limited alike
+        (``cleat``: height m, base m, shape; ``duration``: the FFT record, s)."""
+        raise NotApplicable(self.kind, "one_sided_cleat")
+
+    def air_cavity(self, temperature: float | None = None) -> Cavity:
+        """The tire's air cavity, unloaded (``temperature`` in deg C; default the tire file's ``[cavity]``)."""
+        raise NotApplicable(self.kind, "cavity")
+
+    def loaded_cavity_areas(
+        self, loads: tuple[float, ...], temperature: float | None = None
+    ) -> tuple[list[Footprint], np.ndarray]:
+        """The tire on the flat road at each of ``loads`` (N) and its cavity's Webster area round the
+        wheel in each (m^2, one row per load; :func:`roadnoise_utils.tire.cavity.webster_modes`)."""
+        raise NotApplicable(self.kind, "cavity")
+
+    def rolling_cavity_frfs(self, case: LoadCase, freqs: np.ndarray, flow_speed: float) -> FRFResult:
+        """The fixed-hub FRFs at ``freqs`` (Hz) with the cavity's air streaming at ``flow_speed`` (m/s)
+        round the waveguide's axis (the tire file's ``[cavity]`` settings; not cached)."""
+        raise NotApplicable(self.kind, "rolling_cavity")
 
     @property
     def cavity_enabled(self) -> bool:

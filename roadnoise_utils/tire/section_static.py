@@ -76,6 +76,18 @@ class SectionStaticState(Footprint):
     grid: ContactGrid = field(repr=False)
     tire: CrossSectionSpec | None = field(default=None, repr=False)
 
+    def force_balance(self) -> float:
+        """Largest relative imbalance of the load against the contact forces and the rim's reaction (-).
+
+        The rim's ``n = 1`` reaction is compared with the load with the arc spreading of the contact
+        points removed (``sinc`` of half a grid step): both balances hold to round-off, so the value
+        is a check, not a result (about 1e-12 on the tire files; it varies with the BLAS build).
+        """
+        spread = np.sinc(self.grid.dtheta / (2 * np.pi))
+        hub = abs(self.hub_force / (self.load * spread) - 1.0)
+        contact = abs(float(np.sum(self.contact_force)) / self.load - 1.0)
+        return max(hub, contact)
+
     @property
     def points(self) -> tuple[np.ndarray, np.ndarray]:
         """Column and row index of every point in contact (contact order of the FRFs)."""
@@ -241,34 +253,10 @@ def loaded_displacement(tire: SectionTire, state: SectionStaticState, theta: np.
 
 
 def section_summary(state: SectionStaticState) -> pd.Series:
-    """Key numbers of a loaded cross-section tire, in the paper's units (the rows of the ring's
-    :func:`.static.static_summary`, so the two models' tables line up)."""
-    return pd.Series(
-        {
-            "load (N)": state.load,
-            "deflection (mm)": state.deflection * 1e3,
-            "vertical stiffness, tangent (N/mm)": state.vertical_stiffness / 1e3,
-            "vertical stiffness, secant (N/mm)": state.load / state.deflection / 1e3,
-            "footprint length (mm)": state.footprint_length * 1e3,
-            "footprint width (mm)": state.footprint_width * 1e3,
-            "contact area (cm^2)": state.contact_area * 1e4,
-            "mean contact pressure (MPa)": state.mean_pressure / 1e6,
-            "peak contact pressure (MPa)": state.pressure.max() / 1e6,
-            "contact points": int(state.contact.sum()),
-            "tasselli": state.tasselli.n,
-            "force balance (contact and hub = load to 1e-9)": bool(force_balance(state) < 1e-9),
-        }
-    )
+    """Key numbers of a loaded cross-section tire, in the paper's units (:meth:`SectionStaticState.summary`)."""
+    return state.summary()
 
 
 def force_balance(state: SectionStaticState) -> float:
-    """Largest relative imbalance of the load against the contact forces and the rim's reaction (-).
-
-    The rim's ``n = 1`` reaction is compared with the load with the arc spreading of the contact
-    points removed (``sinc`` of half a grid step): both balances hold to round-off, so the value
-    is a check, not a result (about 1e-12 on the tire files; it varies with the BLAS build).
-    """
-    spread = np.sinc(state.grid.dtheta / (2 * np.pi))
-    hub = abs(state.hub_force / (state.load * spread) - 1.0)
-    contact = abs(float(np.sum(state.contact_force)) / state.load - 1.0)
-    return max(hub, contact)
+    """:meth:`SectionStaticState.force_balance`."""
+    return state.force_balance()

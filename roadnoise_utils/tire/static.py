@@ -67,6 +67,14 @@ class StaticState(Footprint):
     road_height: np.ndarray = field(repr=False)
     tire: TireSpec | None = field(default=None, repr=False)
 
+    def force_balance(self) -> float:
+        """Largest relative imbalance of the load against the hub force and the contact forces' sum (-)."""
+        return max(abs(self.hub_force / self.load - 1.0), abs(self.contact_force.sum() / self.load - 1.0))
+
+    def summary(self) -> pd.Series:
+        """:meth:`~.model.Footprint.summary` and the contact solve's active-set iterations."""
+        return pd.concat([super().summary(), pd.Series({"active-set iterations": self.iterations})])
+
 
 @dataclass(eq=False)
 class ContactProblem:
@@ -352,25 +360,5 @@ def load_deflection(
 
 
 def static_summary(states: dict[str, StaticState]) -> pd.DataFrame:
-    """Key numbers of one or more static states (columns), in the paper's units."""
-    rows = {}
-    for name, st in states.items():
-        t = st.tasselli
-        rows[name] = {
-            "load (N)": st.load,
-            "deflection (mm)": st.deflection * 1e3,
-            "vertical stiffness, tangent (N/mm)": st.vertical_stiffness / 1e3,
-            "vertical stiffness, secant (N/mm)": st.load / st.deflection / 1e3,
-            "footprint length (mm)": st.footprint_length * 1e3,
-            "footprint width (mm)": st.footprint_width * 1e3,
-            "contact area (cm^2)": st.contact_area * 1e4,
-            "mean contact pressure (MPa)": st.mean_pressure / 1e6,
-            "peak contact pressure (MPa)": st.pressure.max() / 1e6,
-            "contact points": int(st.contact.sum()),
-            "tasselli": t.n,
-            "force balance (contact and hub = load to 1e-9)": bool(
-                abs(st.hub_force / st.load - 1.0) < 1e-9 and abs(st.contact_force.sum() / st.load - 1.0) < 1e-9
-            ),
-            "active-set iterations": st.iterations,
-        }
-    return pd.DataFrame(rows)
+    """Key numbers of one or more static states (columns), in the paper's units (:meth:`StaticState.summary`)."""
+    return pd.DataFrame({name: state.summary() for name, state in states.items()})

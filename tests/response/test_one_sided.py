@@ -98,15 +98,17 @@ def test_a_slow_dynamic_run_tends_to_the_quasi_static_one(drum_tire):
 
 
 def test_bad_input_names_the_parameter(drum_tire):
+    from roadnoise_utils.tire.ring.model import check_cleat_height
+
     fet, static = drum_tire
     with pytest.raises(ValueError, match="dt = .* too coarse for the contact"):
         one_sided.dynamic_run(fet, static, CLEAT, 30 / 3.6, (-0.15, 0.0), dt=1e-3)
     with pytest.raises(ValueError, match="speed = .* valid range is speed >="):
         one_sided.dynamic_run(fet, static, CLEAT, 0.01, (-0.15, 0.15), dt=1e-4)
     with pytest.raises(ValueError, match="cleat height = 60.0 mm: valid range is <="):
-        ru.experiments.one_sided_cleat.check_cleat_height(static, 0.06)
+        check_cleat_height(static, 0.06)
     with pytest.warns(ru.guards.RoadnoiseWarning, match="exceeds the static deflection"):
-        ru.experiments.one_sided_cleat.check_cleat_height(static, 0.03)
+        check_cleat_height(static, 0.03)
     with pytest.raises(RuntimeError, match="margin"):
         one_sided.dynamic_run(fet, static, CLEAT, 30 / 3.6, (-0.15, 0.0), margin=0.01)
 

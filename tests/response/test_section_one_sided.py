@@ -68,14 +68,14 @@ def test_bad_input_is_refused():
 
 @pytest.fixture(scope="module")
 def section_test():
-    return ru.experiments.section_cleat_test(TIRE)
+    return ru.experiments.one_sided_cleat_test(TIRE)
 
 
 def test_frozen_dynamic_run_equals_the_frequency_domain():
     """Contact held bilateral on the static set: the time-stepped tire (every harmonic, Prony
     moduli, generalised-alpha, the passive part) against the frequency-domain footprint solve of
     the full model on the same point heights, 0-250 Hz."""
-    check = ru.experiments.section_frozen_check(TIRE)
+    check = ru.experiments.frozen_check(TIRE)
     assert abs(check.peak_difference) < 0.01
     assert check.rms_difference < 0.02
 
@@ -83,7 +83,7 @@ def test_frozen_dynamic_run_equals_the_frequency_domain():
 def test_dynamic_run_keeps_contact_one_sided_and_regains_the_footprint(section_test):
     """No grid point out of contact penetrates the drum at any step (from the displacement, not
     the contact algebra); the footprint lifts off around the cleat and comes back after it."""
-    raw = ru.experiments.section_contact.raw_dynamic(TIRE)
+    raw = ru.experiments.one_sided_cleat.raw_dynamic(TIRE)
     static_points = int(section_test.static.contact.sum())
     assert raw.max_penetration < 1e-9
     assert raw.contact_points.min() < 0.2 * static_points
@@ -120,11 +120,14 @@ def test_runs_stepped_together_are_the_runs_alone():
 
 
 def test_halving_the_step_changes_the_band_limited_impact_little():
-    """The cleat runs' step (``SECTION_DT``, 24 samples per 250 Hz period) against half of it, through
+    """The cleat runs' step (``CONTACT_DT``, 24 samples per 250 Hz period) against half of it, through
     the impact (the window's end is band-limited the same way in both): the 0-250 Hz peak moves by
     less than 0.5 %, as second-order time integration at this step predicts (0.2 % per 250 Hz period
     of numerical damping, ``SPECTRAL_RADIUS``)."""
-    from roadnoise_utils.experiments.section_contact import SECTION_DT, in_band
+    from roadnoise_utils.experiments.one_sided_cleat import in_model_band
+    from roadnoise_utils.tire.cross_section.model import CONTACT_DT
+
+    setup = ru.tire_model(TIRE).one_sided_setup(ru.experiments.one_sided_conditions())
 
     tire = section_stages.section_tire(TIRE)
     drum = section_stages.section_static(TIRE, "drum", drum_radius=1.25)
@@ -132,8 +135,8 @@ def test_halving_the_step_changes_the_band_limited_impact_little():
     reduced = section_stages.harmonic_reductions(TIRE)
     args = (tire, drum, profile, 30 / 3.6, (-0.15, 0.1))
     peaks = []
-    for dt in (SECTION_DT, SECTION_DT / 2):
-        run = in_band(section_dynamic_run(*args, dt=dt, reduced=reduced))
+    for dt in (CONTACT_DT, CONTACT_DT / 2):
+        run = in_model_band(setup, section_dynamic_run(*args, dt=dt, reduced=reduced))
         impact = (run.distance > -0.1) & (run.distance < 0.0)
         peaks.append(run.hub_force[impact].max())
     assert abs(peaks[1] / peaks[0] - 1.0) < 5e-3

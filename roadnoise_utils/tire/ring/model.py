@@ -12,19 +12,20 @@ from typing import Any
 
 import numpy as np
 
+from ... import guards
 from ...repro.cache import cached
 from ...response import fe_reference, frf, modes, one_sided
 from ...response import modal_reduction as modal
 from ...response.modal_reduction import ModalReduction
 from ...response.modes import LoadedModes
-from ...road.cleat import cleat_profile
+from ...road.cleat import cleat_profile, point_heights
 from ...road.input import RoadInput
 from .. import cavity as cavity_model
 from .. import ring_model, static
-from ..model import DEFAULT_FREQS, FRFResult, LoadCase, TireModel, register
+from ..model import DEFAULT_FREQS, ContactSetup, FRFResult, LoadCase, TireModel, register
 from ..ring_model import FETModel
 from ..spec import TireSpec, from_dict
-from ..static import StaticState
+from ..static import DEFLECTION_LIMIT, StaticState
 
 
 @register
@@ -33,7 +34,16 @@ class RingModel(TireModel):
 
     kind = "ring"
     capabilities = frozenset(
-        {"hub_transfer", "modal_reduction", "loaded_modes", "direct_response", "one_sided_cleat", "cavity"}
+        {
+            "hub_transfer",
+            "modal_reduction",
+            "loaded_modes",
+            "released_hub",
+            "direct_response",
+            "one_sided_cleat",
+            "cavity",
+            "rolling_cavity",
+        }
     )
 
     @classmethod
@@ -47,6 +57,9 @@ class RingModel(TireModel):
     def build_fet(self) -> FETModel:
         """The assembled FE tire (fast; not cached)."""
         return ring_model.build_fet(self.spec)
+
+    def degrees_of_freedom(self) -> str:
+        return f"{self.build_fet().n_dof}"
 
     def rim_side_mass(self) -> float:
         """:attr:`~roadnoise_utils.tire.ring_model.FETModel.hub_vertical_mass` (kg)."""
@@ -114,6 +127,36 @@ class RingModel(TireModel):
         cav = cavity_model.ring_tire_cavity(self.spec, air.temperature)
         return cavity_model.ring_cavity_coupling(fet, state, cav, n_modes=air.modes, damping_ratio=air.damping_ratio)
 
+    def released_hub(
+        self, case: LoadCase, freqs: np.ndarray, mass: float, stiffness: float, damping: float
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """:func:`roadnoise_utils.response.fe_reference.fe_moving_hub`: the FE tire with its hub DOF free."""
+        return fe_reference.fe_moving_hub(self.build_fet(), self.load(case), freqs, mass, stiffness, damping)
+
+    def air_cavity(self, temperature: float | None = None) -> cavity_model.Cavity:
+        """:func:`roadnoise_utils.tire.cavity.ring_tire_cavity`: from the rim to the belt's inner surface."""
+        return cavity_model.ring_tire_cavity(self.spec, temperature)
+
+    def loaded_cavity_areas(
+        self, loads: tuple[float, ...], temperature: float | None = None
+    ) -> tuple[list[StaticState], np.ndarray]:
+        """The cached loaded states and :func:`roadnoise_utils.tire.cavity.loaded_area` of each (at the belt nodes)."""
+        cav = self.air_cavity(temperature)
+        states = [self.load(self.case("flat", load)) for load in loads]
+        return states, np.array([cavity_model.loaded_area(cav, state) for state in states])
+
+    def rolling_cavity_frfs(self, case: LoadCase, freqs: np.ndarray, flow_speed: float) -> FRFResult:
+        """:func:`roadnoise_utils.response.frf.frf_visco` with the loaded cavity's coupling
+        (:func:`~roadnoise_utils.tire.cavity.ring_cavity_coupling`) streaming at ``flow_speed`` (m/s;
+        :func:`~roadnoise_utils.tire.cavity.rolling_coupling`)."""
+        air, state, fet = self.spec.cavity, self.load(case), self.build_fet()
+        cav = self.air_cavity()
+        coupling = cavity_model.ring_cavity_coupling(
+            fet, state, cav, n_modes=air.modes, damping_ratio=air.damping_ratio
+        )
+        rolling = cavity_model.rolling_coupling(coupling, cav, flow_speed)
+        return frf.frf_visco(fet, state, np.asarray(freqs, dtype=float), progress=False, cavity=rolling)
+
     def loaded_modes(self, case: LoadCase, n_modes: int = 60, reference_frequency: float = 70.0) -> LoadedModes:
         """Cached :func:`roadnoise_utils.response.modes.loaded_modes` (without the cavity)."""
         self._no_cavity("loaded_modes")
@@ -165,6 +208,36 @@ class RingModel(TireModel):
             name="fe_cleat_response",
         )
 
+    def refined(self, n_elements: int) -> RingModel:
+        """The tire with ``n_elements`` around the circumference, everything else unchanged (named so)."""
+        if self.spec.mesh.n_elements == n_elements:
+            return self
+        name = f"{self.spec.name} ({n_elements} elements)"
+        return RingModel(self.spec.replace(**{"mesh.n_elements": n_elements}, name=name))
+
+    def one_sided_setup(self, conditions: Any) -> ContactSetup:
+        """The tire refined to ``conditions.n_elements`` (its contact points then 3 mm apart on the
+        165/65 R14), the quasi-static passage over the dynamic run's travel, the force as stepped
+        (its massless tread springs do not ring); a cleat it cannot envelop is refused first."""
+        refined = self.refined(conditions.n_elements)
+        static = refined.load(refined.case("drum", drum_radius=conditions.cleat.drum_radius))
+        check_cleat_height(static, conditions.cleat.height)
+        return ContactSetup(refined, conditions.distance, conditions.quasi_static_step, None, None)
+
+    def frozen_reference(
+        self, case: LoadCase, run: one_sided.ContactRun, cleat: tuple[float, float, str], duration: float
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """:func:`roadnoise_utils.response.fe_reference.fe_point_response` of the hat-averaged cleat
+        heights under every contact node (the footprint sliding freely, as the frictionless contact)."""
+        state = self.load(case)
+        t = state.tasselli
+        heights = point_heights(t.node_x, t.node_dx_minus, t.node_dx_plus, cleat_profile(*cleat), run.distance)
+        reference = fe_reference.fe_point_response(
+            self.build_fet(), state, heights, run.dt, duration=duration, stick=False
+        )
+        n_fft = max(run.t.size, int(round(duration / run.dt)))
+        return fe_reference.band_limited(run.hub_force, run.dt, n_fft=n_fft), reference
+
     def one_sided_run(self, case: LoadCase, cleat: dict[str, Any]) -> one_sided.ContactRun:
         """Cached cleat passage with one-sided contact on the drum of ``case``: quasi-static for
         ``speed = 0``, else dynamic (``cleat``: speed, height, base, shape, distance, frozen, step, dt)."""
@@ -183,4 +256,28 @@ class RingModel(TireModel):
         runs = (one_sided.quasi_static_run, one_sided.dynamic_run, static.solve_static)
         return cached(
             RingModel.one_sided_run, {**self._inputs(case), **cleat}, compute, runs=runs, name="one_sided_run"
+        )
+
+
+def check_cleat_height(static: StaticState, height: float) -> None:
+    """Refuse a cleat the tire cannot envelop; warn when it is taller than the static deflection.
+
+    Over the cleat the tire deflects by its static deflection plus the cleat height; past
+    :data:`~roadnoise_utils.tire.static.DEFLECTION_LIMIT` of the section height it would
+    bottom on the rim, which the model does not know.
+    """
+    g = static.tire.geometry
+    section = g.section_width * g.aspect_ratio
+    room = DEFLECTION_LIMIT * section - static.deflection
+    if height > room:
+        raise ValueError(
+            f"cleat height = {height * 1e3:.1f} mm: valid range is <= {room * 1e3:.1f} mm, what the tire can envelop "
+            f"over its {static.deflection * 1e3:.1f} mm static deflection ({DEFLECTION_LIMIT:.0%} of the "
+            f"{section * 1e3:.0f} mm section height in all)"
+        )
+    if height > static.deflection:
+        guards.warn(
+            f"cleat height = {height * 1e3:.1f} mm exceeds the static deflection ({static.deflection * 1e3:.1f} mm): "
+            "the whole footprint lifts off the drum over the cleat",
+            stacklevel=4,
         )
