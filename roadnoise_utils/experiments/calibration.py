@@ -1,4 +1,4 @@
-"""Calibration of a FET against its targets (DESIGN section 2): the "target / obtained" table.
+"""Calibration of a FET against its targets: the "target / obtained" table.
 
 Targets live in ``data/calibration/<tire>.toml`` (a range and a source for each quantity);
 the obtained values are computed from the static state and the direct FRF of the tire (the
