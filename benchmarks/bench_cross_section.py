@@ -1,4 +1,4 @@
-"""Benchmark of the cross-section FE tire beside the ring model, in one run (issue 13, item 8).
+"""Benchmark of the cross-section FE tire beside the ring model, in one run.
 
 Run on demand (never as a timed test)::
 

@@ -88,7 +88,7 @@ def _run(args) -> None:
         pvf = _peer(fitting_peer.pyvectorfit_fit, args.repeat, visco.freqs, visco.H, poles, BAND)
         e = ours.rms_errors
         print(_row(poles, "roadnoise, best iteration", n * poles, e, e, seconds))
-        print(_row(poles, "roadnoise, last iteration (before issue 16)", n * poles, last, e, None))
+        print(_row(poles, "roadnoise, last iteration (before)", n * poles, last, e, None))
         print(_row(poles, "scikit-rf VectorFitting", n * poles, skrf[0], e, skrf[1]))
         print(_row(poles, "pyvectorfit fit", n * poles, pvf[0], e, pvf[1]))
 

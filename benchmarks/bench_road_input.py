@@ -5,7 +5,7 @@ Run on demand (never as a timed test)::
     python benchmarks/bench_road_input.py
 
 A road uniform across the width puts one track under every belt strip, so ``profile_input``
-correlates it once with all the strips' kernels (issue 16, item 2). The same road given as a
+correlates it once with all the strips' kernels. The same road given as a
 3-D road, ``profile(s, y)``, takes the per-strip path (one correlation per strip). Both run on
 the 195/65 R15 at 120 km/h over the rough-road test's length and sample rate; the times are
 ranges over repeats (the machines are shared), the inputs equal to round-off.

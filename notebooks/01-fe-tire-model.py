@@ -24,7 +24,7 @@
 # — "mounting of the rim, inflation of the tire to the nominal pressure, and vertical loading" —
 # gives the footprint, which is then divided into 71 blocks, the *tasselli* (Fig. 2).
 #
-# The paper's FE model is not available, so we build our own (DESIGN §2): a belt of coupled
+# The paper's FE model is not available, so we build our own: a belt of coupled
 # rings of frame elements with the inflation pre-tension and the follower-pressure load
 # stiffness, a viscoelastic sidewall/air foundation to a rigid rim, and viscoelastic tread
 # elements with a crown profile. In this chapter we
@@ -81,8 +81,8 @@ print(f"meridional crown tension = {tire.lateral_tension:.0f} N/m")
 # $g(\omega) = \dfrac{1 + r (i\omega\tau)^\alpha}{1 + (i\omega\tau)^\alpha}$, so the stiffness
 # is assembled once per compound at its static modulus and
 # $K(\omega) = K_{elastic} + \sum_c g_c(\omega) K_c$: any frequency costs one sparse solve.
-# DESIGN §2 asks for a storage modulus rising 10-40 % from 1 to 250 Hz and a loss factor of
-# 0.05-0.25.
+# The compound laws are chosen for a storage modulus rising 10-40 % from 1 to 250 Hz and a loss
+# factor of 0.05-0.25.
 
 # %%
 # Storage-modulus rise and loss factor of each compound
@@ -92,7 +92,7 @@ plt.show()
 
 # %%
 # NBVAL_CHECK_OUTPUT
-# Storage rise 1 -> 250 Hz and loss factor of each compound (DESIGN: +10-40 %, 0.05-0.25)
+# Storage rise 1 -> 250 Hz and loss factor of each compound (target: +10-40 %, 0.05-0.25)
 compounds = ru.tire.compound_table(fet.laws)
 print(compounds.to_string(float_format=lambda v: f"{v:.3f}"))
 
@@ -122,7 +122,7 @@ plt.show()
 #
 # With the tread, the contact and the lateral coupling removed, one ring of radius $R$,
 # bending stiffness $EI$, tension $T$, mass $\rho A$ on a radial and tangential foundation
-# $k_r, k_t$ has the in-plane frequencies of an inextensible ring (DESIGN §2; Gong 1993):
+# $k_r, k_t$ has the in-plane frequencies of an inextensible ring (Gong 1993):
 #
 # $$\omega_n^2 = \frac{n^2\left[\dfrac{EI(n^2-1)^2}{R^4} + \dfrac{T(n^2-1)}{R^2} + k_r\right] +
 # k_t}{\rho A\,(n^2+1)},
@@ -138,7 +138,7 @@ ring = ru.ring_check(tire, n_max=8)
 print(ring.to_string(float_format=lambda v: f"{v:.5f}"))
 
 # %%
-# The check holds to < 1 % for n <= 6 (DESIGN §2); in fact to < 0.1 % for all n <= 8
+# The check holds to < 1 % for n <= 6; in fact to < 0.1 % for all n <= 8
 worst = ring["rel_error"].abs()
 assert worst.loc[:6].max() < 0.01 and worst.max() < 1e-3
 
@@ -292,7 +292,7 @@ plt.show()
 # ## 7. Calibration: target / obtained
 #
 # The free parameters (foundation stiffness, belt mass and bending stiffness, tread
-# stiffness, crown drop) were tuned, within physically plausible ranges, to the DESIGN §2
+# stiffness, crown drop) were tuned, within physically plausible ranges, to the calibration
 # targets (`data/calibration/165_65R14.toml`). The first vertical resonance is read from the
 # direct viscoelastic whole-footprint-to-hub FRF $H_{tot}$ (the curve of the paper's Fig. 5,
 # computed in full in notebook 02), not from the mode table.

@@ -24,7 +24,7 @@
 # properties of rubber materials, while a viscoelastic model (both elastic and loss moduli
 # dependent on frequency) governs their dynamic properties", about 8000 DOF. Our ring model
 # (notebook 01) is a teaching model of that: a belt of rings on springs. This chapter builds
-# the second family of DESIGN section 2: the tire **from its cross-section**, as tire/road-noise
+# a second family of FE tire: the tire **from its cross-section**, as tire/road-noise
 # research does (Nilsson; Fraggstedt 2006; Sabiniarz & Kropp; Waki, Mace & Brennan 2009):
 #
 # * the cross-section meshed with **layered 9-node solids** — liner, radial carcass, two steel
@@ -40,7 +40,8 @@
 #   FETvisco).
 #
 # The tire file selects the model: ``[tire] model = "cross-section"`` (``data/tires/
-# 165_65R14_cross_section.toml``). Issue 14 runs the RM pipeline (notebooks 02-07) on it.
+# 165_65R14_cross_section.toml``). Notebooks 02-07 run the RM pipeline on it
+# (section 10 says where).
 
 # %%
 import matplotlib.pyplot as plt
@@ -115,10 +116,10 @@ print(f"sidewall N_s r / membrane value: {ratio.min():.2f} - {ratio.max():.2f}")
 # ## 3. Verification
 #
 # The model is checked against closed forms, membrane theory and a second discretisation
-# (issue 13, item 5; the tests assert each):
+# (the tests assert each):
 #
 # * **(a)** reduced to one thin layer under tension and follower pressure on a radial and
-#   tangential foundation, the ring frequencies of DESIGN section 2;
+#   tangential foundation, the closed-form ring frequencies (Gong 1993; notebook 01);
 # * **(b)** a thin inflated torus against the membrane forces of Timoshenko &
 #   Woinowsky-Krieger (1959, §107);
 # * **(e)** the harmonic sum of a receptance against a direct 3-D assembly of the same
@@ -152,8 +153,8 @@ assert three_d_difference < 1e-10
 # branch (notebook 01), a tire with the same targets built from calibrated springs.
 #
 # Published measured frequencies for a similar tire could not be read on this machine (no
-# network; the abstracts we found give none): the comparison with a measurement is an open
-# item of issue 13.
+# network; the abstracts we found give none): the comparison with a measurement is still
+# open.
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -258,11 +259,11 @@ assert force_balance(flat) < 1e-9
 #
 # The pneumatic stiffness (pre-stress and pressure load stiffness together) stores 65-80 % of
 # the strain energy of the first modes. Lossless, the layers alone (their compound laws, tan
-# delta 0.05-0.12 at 80 Hz) give ζ ≈ 0.01-0.02, the under-damping the ring model had before
-# issue 12. The tire file gives the pneumatic stiffness the carcass law (``[pneumatic]
-# compound``), the ring model's choice for its pneumatic foundation; that is a model of a loss
-# the linear layers do not produce (cord-rubber hysteresis of the plies carrying the pressure),
-# not a material property: set it to ``"none"`` to see the tire without it.
+# delta 0.05-0.12 at 80 Hz) give ζ ≈ 0.01-0.02, the under-damping the ring model has with a
+# lossless pneumatic foundation. The tire file gives the pneumatic stiffness the carcass law
+# (``[pneumatic] compound``), the ring model's choice for its pneumatic foundation; that is a
+# model of a loss the linear layers do not produce (cord-rubber hysteresis of the plies carrying
+# the pressure), not a material property: set it to ``"none"`` to see the tire without it.
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -272,11 +273,11 @@ print(chapter.damping_sources(tire).to_string(float_format=lambda v: f"{v:.3f}")
 # %% [markdown]
 # ## 8. Calibration from construction data
 #
-# Targets of DESIGN section 2 for the 165/65 R14 (``data/calibration/165_65R14.toml``; the
+# The calibration targets of the 165/65 R14 (``data/calibration/165_65R14.toml``; the
 # cross-section file shares the size's targets). The construction values were not tuned to
 # them. Two choices were made with the targets in view: the rounded shoulder (3 mm over
 # 12 mm, which removes line loads at the tread edges) and the pneumatic law (section 7),
-# whose compound laws were themselves calibrated in the ring model (issue 12) — so ζ1 is a
+# whose compound laws were themselves calibrated in the ring model — so ζ1 is a
 # calibration, not a prediction. The tangent vertical stiffness (the slope of the
 # load-deflection curve, what the ring model reports) misses: 18 % above the top of the range,
 # 33 % above its middle, while the secant load / deflection is inside it. We have not
@@ -310,7 +311,7 @@ print(chapter.convergence_table(tire_name).to_string(float_format=lambda v: f"{v
 # | rubber statics | Mooney-Rivlin, nonlinear | linear about the inflated state |
 # | rubber dynamics | frequency-dependent moduli | fractional-Zener law per compound |
 # | DOF | ~8000 | see the comparison table (per harmonic × harmonics) |
-# | air cavity | not modelled | not modelled (issue 15) |
+# | air cavity | not modelled | optional: `[cavity] enabled`, off by default (notebook 11, section 6) |
 #
 # The numbers the paper gives for its FET — the first vertical resonance near 80 Hz and the
 # footprint of 71 tasselli — are in the comparison and calibration tables above. The RM chain

@@ -1,6 +1,6 @@
 """roadnoise: the road-noise (RM) model of Belluzzo et al. (2002), stage by stage.
 
-Public entry points (DESIGN section 6)::
+Public entry points::
 
     import roadnoise_utils as ru
     tire   = ru.load_tire("165_65R14")          # validated TireSpec from data/tires/*.toml

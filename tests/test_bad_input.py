@@ -1,5 +1,5 @@
 """Bad input gets a clear error naming the argument and its valid range, before any work; doubtful
-input a RoadnoiseWarning. One parametrised case per defect of the audit (issue 11), grouped by kind."""
+input a RoadnoiseWarning. One parametrised case per defect of the audit, grouped by kind."""
 
 from __future__ import annotations
 
@@ -243,7 +243,7 @@ def test_conditions_files_are_read_by_name_or_path():
     assert ru.experiments.conditions.load_conditions(path) == ru.experiments.conditions.load_conditions("cleat_test")
 
 
-# ---------------------------------------------------------------- the second audit (helper review of issue 11)
+# ---------------------------------------------------------------- the second audit
 
 
 def test_an_fe_model_and_a_static_state_of_different_tires_are_refused(tire, fet, coarse_flat):

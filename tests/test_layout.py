@@ -1,6 +1,6 @@
 """The package layout keeps its promises: data flows one way, no private names cross modules,
 condition files are read only by the experiments, modules stay short, tests mirror the folders,
-and no checked notebook output prints round-off."""
+no checked notebook output prints round-off, and the text cites nothing outside the repository."""
 
 from __future__ import annotations
 
@@ -151,3 +151,43 @@ def test_no_checked_output_prints_round_off():
     assert len(checked) > 50  # the notebooks were found
     offending = {f"{name} cell {k}": values for name, k, text in checked if (values := round_off_values(text))}
     assert not offending, f"checked outputs print round-off as values: {offending}"
+
+
+#: A reference to something not in the repository: an issue number or the design document.
+OUTSIDE_REFERENCE = re.compile(r"\b[Ii]ssues? #?\d+|\bDESIGN\b")
+
+
+def _project_texts() -> list[Path]:
+    """The files that speak of the project: the package, the tests, the notebooks' sources, the
+    benchmarks, the README and the data files; this file, which names the pattern, left out."""
+    paths = [
+        *PACKAGE_DIR.rglob("*.py"),
+        *(REPO_ROOT / "tests").rglob("*.py"),
+        *(REPO_ROOT / "notebooks").glob("*.py"),
+        *(REPO_ROOT / "benchmarks").rglob("*.py"),
+        REPO_ROOT / "conftest.py",
+        REPO_ROOT / "README.md",
+        *(REPO_ROOT / "data").rglob("*.toml"),
+    ]
+    return sorted(path for path in paths if path.is_file() and path.resolve() != Path(__file__).resolve())
+
+
+def test_the_outside_reference_pattern_finds_issues_and_the_design_document():
+    for text in ("issue 15", "(Issue 13, item 5)", "issues 14 and 16", "issue #12", "DESIGN section 2", "DESIGN §2"):
+        assert OUTSIDE_REFERENCE.search(text), text
+    for text in ("designs", "the design sweep", "tissue 5", "the issue of the fits", "DESIGNS"):
+        assert not OUTSIDE_REFERENCE.search(text), text
+
+
+def test_no_references_outside_the_repository():
+    """Code, notebooks and docs speak of the project only: say what an issue or a document outside
+    the repository said, or point to the file or the paper that holds it."""
+    texts = _project_texts()
+    assert len(texts) > 100  # the files were found
+    offending = [
+        f"{path.relative_to(REPO_ROOT)}:{k}: {line.strip()}"
+        for path in texts
+        for k, line in enumerate(path.read_text(encoding="utf-8").splitlines(), start=1)
+        if OUTSIDE_REFERENCE.search(line)
+    ]
+    assert not offending, "references outside the repository:\n" + "\n".join(offending)

@@ -68,7 +68,7 @@ def free_dispersion(tire: SectionTire, n_max: int = 12, f_max: float = 400.0, pe
 
 
 def convergence_table(tire: str | CrossSectionSpec, harmonics=(300, 400, 600), crown=(10, 14, 18)) -> pd.DataFrame:
-    """Loaded-tire numbers against the number of harmonics and of crown elements (issue 13, item 5c)."""
+    """Loaded-tire numbers against the number of harmonics and of crown elements."""
     spec = section_stages.load_section_tire(tire)
     cases = [("harmonics", h, {"mesh.harmonics": h}) for h in harmonics]
     cases += [("crown elements", c, {"mesh.crown_elements": c}) for c in crown]

@@ -1,4 +1,4 @@
-"""The top-level entry points whose defaults are the paper's test (DESIGN section 6).
+"""The top-level entry points whose defaults are the paper's test.
 
 ``ru.solve_static(fet, road="drum")`` and ``ru.cleat_input(static, speed)`` need the drum and
 the cleat of the paper's test when none is given. The numerics

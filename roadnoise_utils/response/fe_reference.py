@@ -1,6 +1,6 @@
 """FE reference solves: responses straight from the viscoelastic FE tire, no reduction, no fitting.
 
-The second method every RM-chain result is checked against (DESIGN section 4):
+The second method every RM-chain result is checked against:
 
 * :func:`fe_road_response` — the hub force of any road input in the frequency domain,
   :math:`F(\\omega) = \\sum_i H_i(\\omega)\\,U_i(\\omega)` with the direct :math:`H_i` at every FFT

@@ -1,4 +1,4 @@
-"""The air cavity in the cross-section tire's footprint FRFs (beyond the paper; issue 15, item 5).
+"""The air cavity in the cross-section tire's footprint FRFs (beyond the paper).
 
 The loaded cavity (:mod:`.tire.section_cavity`) carries plane waves whose modes
 :math:`\\phi_m(\\theta)` (Webster's equation on the loaded area, mass-normalised) have the
@@ -35,7 +35,7 @@ volume change about the round tire, :math:`dV/d\\delta \\approx -2\\cdot10^{-4}`
 165/65 R14, which stiffens the tire by ~4e-6 of :math:`K_v`. The loaded tire's own pressure
 sensitivity gives, through the Maxwell relation :math:`\\partial V/\\partial\\delta =
 -\\partial F/\\partial p_0`, a tangent of ~-1.4e-2 m^2 (70 % of the membrane bound :math:`F/p_0`), so
-~2 % of :math:`K_v` (helper review, issue 15): the difference is the belt's second-order,
+~2 % of :math:`K_v`: the difference is the belt's second-order,
 inextensible deformation, which a linear tire does not have. A rank-one term from two static
 solves at :math:`p_0 \\pm \\delta p` would make the limit exact; not done yet.
 """

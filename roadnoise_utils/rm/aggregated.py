@@ -1,4 +1,4 @@
-"""The hub force of a road flowing through the footprint, aggregated: one kernel per road track (issue 16, item 1).
+"""The hub force of a road flowing through the footprint, aggregated: one kernel per road track.
 
 The per-tassello simulation (:func:`.simulation.simulate`) runs every modal section on its
 tassello's input. On a road the inputs are not independent: tassello ``i`` sees its track

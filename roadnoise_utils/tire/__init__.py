@@ -5,7 +5,7 @@ built from ``elements`` and ``rubber``) -> ``static`` (contact on a flat road or
 ``tasselli`` (the footprint in blocks). ``closed_form`` checks the ring against its
 closed-form frequencies, ``mode_shapes`` labels mode shapes, ``symmetry`` gives the exact
 mirror-symmetric subspace the response solvers use. The second tire model, the
-cross-section (DESIGN section 2b, ``[tire] model = "cross-section"``): ``cross_section``
+cross-section (``[tire] model = "cross-section"``, notebook 09): ``cross_section``
 (validated construction files) -> ``laminate`` (layer constants) -> ``section_geometry`` and
 ``section_mesh`` (the layered mesh) -> ``waveguide`` and ``section_model`` (harmonic matrices,
 inflation) -> ``section_contact`` and ``section_static`` (Green's functions, the loaded tire)

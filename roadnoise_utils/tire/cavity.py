@@ -1,4 +1,4 @@
-"""The tire's air cavity as an acoustic waveguide around the wheel (beyond the paper; issue 15, item 5).
+"""The tire's air cavity as an acoustic waveguide around the wheel (beyond the paper).
 
 The air between the rim and the belt is a torus; below its first cross-sectional mode (~1 kHz
 for a passenger tire) the sound in it is a plane wave running around the circumference, and a
@@ -45,7 +45,7 @@ structure at rest). The cross-section tire's cavity is :mod:`.section_cavity` an
 :mod:`..response.section_cavity_frf` (at rest). Not yet: the cavity in the FE stages that step or
 reduce the tire.
 
-**Limits found so far (a review of the physics, issue 15):**
+**Limits found so far (a review of the physics):**
 
 * the sidewalls bulge as inextensible arcs (:func:`sidewall_gain`); without them the split was
   19.5 Hz on the 165/65 R14 at its 4512 N, above the measured 2-14 Hz.
@@ -56,7 +56,7 @@ reduce the tire.
 * the waveguide's area is the section's volume per radian over the centroid's radius in both its
   stiffness and its mass, which puts the rigid torus's modes ~0.65 % low against the uniform
   pressure's Rayleigh quotient with the stiffness weighted by :math:`R_c\\int dA/r` (243.6 against
-  242.1 Hz on the 165/65 R14 cross-section; helper review, issue 15), on both tire models.
+  242.1 Hz on the 165/65 R14 cross-section), on both tire models.
 * the ring tire is calibrated to measured modes, which include the air: the cavity on top lowers
   its first vertical mode by ~3 Hz (80 -> 77 Hz on the 165/65 R14) until it is recalibrated.
 """
@@ -375,7 +375,7 @@ def ring_cavity_coupling(
     :math:`f_b - f_r = A` and a rigid translation of the whole tire sloshes the waveguide's air
     along the axis as the air's own mass requires (:math:`\\rho V / 2`, the axial half of it; the
     1-D model has no transverse flow). Without the sidewalls the faces overstate the coupling by
-    18-30 % on our tires (helper review, issue 15).
+    18-30 % on our tires.
     """
     guards.integer("n_modes", n_modes, 1, fet.mesh.n_elements)
     guards.real("damping_ratio", damping_ratio, 0.0, 0.5, unit="-")
@@ -477,7 +477,7 @@ def rolling_coupling(coupling: CavityCoupling, cavity: Cavity, flow_speed: float
 
     The convection carries the mean flow's continuity (:func:`flux_area`: its first-order term);
     its second-order term :math:`\\beta^2` keeps the section's weight and the wall's source
-    omits :math:`U' q`, together ~1-2 % of the rolling FRF's peak (helper review, issue 15). At
+    omits :math:`U' q`, together ~1-2 % of the rolling FRF's peak. At
     0 Hz the coupling falls back to the air's compressibility at rest: the flow's static pressure,
     ~0.2 % of the hub's own stiffness just above 0 Hz, is left out.
     """

@@ -1,4 +1,4 @@
-"""Closed-form check of the belt: one ring on an elastic foundation (DESIGN section 2).
+"""Closed-form check of the belt: one ring on an elastic foundation.
 
 An inextensible ring of radius :math:`R`, bending stiffness :math:`EI`, inflation tension
 :math:`T`, mass per length :math:`\\rho A` on a radial and tangential foundation

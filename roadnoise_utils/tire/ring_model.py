@@ -2,8 +2,8 @@
 
 The paper's FETvisco model (~8000 DOF, Mooney-Rivlin statics, viscoelastic dynamics, no
 air cavity) is not available, so we build a physically sound substitute of the family
-described in DESIGN section 2 (flexible rings on an elastic foundation, Gong 1993;
-Kung, Soedel & Yang 1986; multi-ring belts as in Kindt 2009):
+of flexible rings on an elastic foundation (Gong 1993; Kung, Soedel & Yang 1986; multi-ring
+belts as in Kindt 2009):
 
 * **Belt**: ``n_strips`` lateral strips, each a closed polygonal ring of ``n_elements``
   straight frame elements in the wheel plane (DOF per node: ``ux``, ``uz``, ``phi``), with

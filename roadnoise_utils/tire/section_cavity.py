@@ -1,4 +1,4 @@
-"""The air cavity of the tire built from its cross-section (beyond the paper; issue 15, item 5).
+"""The air cavity of the tire built from its cross-section (beyond the paper).
 
 The cavity is the torus between the tire's inner surface (the mesh's inner face, bead to bead)
 and the rim, here closed by the flanges' inner faces down to the bead seat and the rim's base

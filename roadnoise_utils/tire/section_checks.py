@@ -1,10 +1,10 @@
 """Verification of the cross-section tire against closed forms, membrane theory and a 3-D assembly.
 
-The checks of issue 13 as functions returning tables, shared by the tests (which assert them)
+The checks as functions returning tables, shared by the tests (which assert them)
 and notebook 09 (which shows them):
 
 * :func:`ring_check` (a): one thin, stiff layer under tension and follower pressure on a radial
-  and tangential foundation, against the closed-form ring frequencies (DESIGN section 2,
+  and tangential foundation, against the closed-form ring frequencies (Gong 1993,
   :func:`.closed_form.ring_frequencies`);
 * :func:`torus_check` (b): the linear inflation of a thin torus against the membrane forces
   :math:`N_\\theta = pa/2`, :math:`N_\\varphi = pa(r + R_0)/(2r)` (Timoshenko &

@@ -12,7 +12,7 @@ any harmonic's stiffness and mass cost a few sparse additions:
 ``K_sigma`` and the follower-pressure load stiffness ``-p H``, always together (each alone
 resists rigid rotations; together they do not). Its law ``g_p`` is the modelling choice of the
 tire file's ``[pneumatic] compound``: ``"none"`` keeps it lossless (``g_p = 1``), a compound
-name (the carcass) gives it that law — the ring model's pneumatic foundation (issue 12): the
+name (the carcass) gives it that law — the ring model's pneumatic foundation: the
 cord plies that carry the pressure flex as the tire deforms and their rubber matrix shears
 between the cords. It is a model of a loss the linear layers do not produce, not a material
 property; notebook 09 shows both.

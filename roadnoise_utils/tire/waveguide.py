@@ -312,7 +312,7 @@ def face_springs(
     """Distributed springs to ground on a face (N/m^3 radial ``k_r`` and tangential ``k_t``), per radian.
 
     The same for every harmonic (times ``w_n``); used to put a ring on an elastic foundation for
-    the closed-form check of DESIGN section 2.
+    the check against the closed-form ring frequencies of :mod:`.closed_form` (Gong 1993).
     """
     s = surface_points(lines)
     r = (s.shape * node_r[s.nodes]).sum(1)

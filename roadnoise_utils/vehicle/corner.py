@@ -1,6 +1,6 @@
 """One vehicle corner on a road: the RM tire coupled with the quarter car (paper Eq. 8, Fig. 11-14).
 
-Time domain, as the issue and DESIGN section 4 ask: the fixed-hub road force :math:`F_F(t)`
+Time domain: the fixed-hub road force :math:`F_F(t)`
 is computed once by the fast block-diagonal simulation (:mod:`roadnoise_utils.rm.simulation`), then a *small*
 system — the quarter car closed through the hub FRF :math:`G_H` — is driven by it. Because
 the whole chain is linear this equals integrating the full Eq. 8 state vector, at a fraction

@@ -1,4 +1,4 @@
-"""The air cavity through the tire file's switch: the direct FRFs, the RM chain and the refusing FE stages (issue 15, item 5)."""
+"""The air cavity through the tire file's switch: the direct FRFs, the RM chain and the refusing FE stages."""
 
 from __future__ import annotations
 

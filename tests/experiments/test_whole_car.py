@@ -1,4 +1,4 @@
-"""The whole car on the road test: spectra, left/right coherence and the experiment's checks (issue 15, item 3)."""
+"""The whole car on the road test: spectra, left/right coherence and the experiment's checks."""
 
 from __future__ import annotations
 

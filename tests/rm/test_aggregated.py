@@ -1,4 +1,4 @@
-"""The aggregated road simulation against the per-tassello one (issue 16, item 1)."""
+"""The aggregated road simulation against the per-tassello one."""
 
 from __future__ import annotations
 

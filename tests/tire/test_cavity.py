@@ -1,4 +1,4 @@
-"""The air cavity as a waveguide: the rigid torus, Webster's equation, the split under load (issue 15, item 5)."""
+"""The air cavity as a waveguide: the rigid torus, Webster's equation, the split under load."""
 
 from __future__ import annotations
 

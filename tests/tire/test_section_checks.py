@@ -1,7 +1,7 @@
 """The cross-section (waveguide) FE tire: element checks against closed forms and a 3-D assembly.
 
-Issue 13, verification (a), (b), (e) and the element properties; the loaded tire is in
-``test_section_static.py``.
+Verification (a), (b), (e) of notebook 09, section 3, and the element properties; the loaded
+tire is in ``test_section_static.py``.
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ from roadnoise_utils.tire.waveguide import harmonic_weight, pressure_operators
 
 
 def test_thin_ring_on_foundation_matches_the_closed_form():
-    """(a) One thin stiff layer, tension and follower pressure, radial/tangential foundation: DESIGN section 2."""
+    """(a) One thin stiff layer, tension and follower pressure, radial/tangential foundation: Gong 1993."""
     table = section_checks.ring_check()
     assert table["error (%)"].abs().max() < 1.0
 

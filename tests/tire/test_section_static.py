@@ -1,4 +1,4 @@
-"""The loaded cross-section tire: contact, force balance, reciprocity, footprint FRFs (issue 13: c, d, f)."""
+"""The loaded cross-section tire: contact, force balance, reciprocity, footprint FRFs (verification c, d, f)."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""The whole vehicle on four RM tires (paper Eq. 8, beyond the paper; issue 15, items 1-4 and 8)."""
+"""The whole vehicle on four RM tires (paper Eq. 8, beyond the paper)."""
 
 from __future__ import annotations
 

@@ -1,6 +1,6 @@
 """Tire files of the cross-section model (``[tire] model = "cross-section"``): the construction.
 
-A cross-section tire file describes the tire as it is built (DESIGN section 2b): the outer
+A cross-section tire file describes the tire as it is built: the outer
 profile, the sidewall meridian from the bead to the belt edge, and the layers with their
 thickness, density, moduli and compound. It is validated as strictly as a ring file
 (:mod:`.spec`): every missing, unknown, non-numeric or out-of-range value is refused with its
