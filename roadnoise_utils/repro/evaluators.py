@@ -32,8 +32,7 @@ from ..experiments.whole_car import (
 )
 from ..rm.fitting import fit_tasselli
 from ..road.kernels import tassellation_error
-from ..tire.cross_section import stages as section_stages
-from ..tire.model import FRFResult
+from ..tire.model import FRFResult, tire_model
 from ..vehicle.quarter_car import FrequencyBand, load_vehicle, transmissibility_statistics
 from ..vehicle.spectra import band_rms, power_share
 from . import stages
@@ -96,10 +95,7 @@ def _transmissibility_stats() -> dict[str, float]:
 
 
 def _fe_dof(model: str) -> float:
-    if model == "ring":
-        return float(stages.build_fet(tire_of(model)).n_dof)
-    tire = section_stages.section_tire(tire_of(model))
-    return float(tire.ops.free.size * (2 * tire.harmonics + 1))  # a 3-D mesh of the same resolution (2N + 1 stations)
+    return float(tire_model(tire_of(model)).equivalent_dof())
 
 
 def _first_vertical_resonance(model: str) -> float:
@@ -200,7 +196,7 @@ def _cavity_split(model: str):
 def _cavity_tire(model: str) -> str:
     """The cavity test's tire (``[cavity] tire`` of whole_car.toml, the ring's) in ``model``."""
     ring = cavity_conditions().tire
-    return ring if model == "ring" else tire_of(model, next(role for role, t in TIRES["ring"].items() if t == ring))
+    return tire_of(model, next(role for role, t in TIRES["ring"].items() if t == ring))
 
 
 def _rated_load(model: str) -> float:

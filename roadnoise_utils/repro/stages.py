@@ -54,16 +54,6 @@ def load_tire(tire: Tire):
     return tire_model(tire).spec
 
 
-def model_name(tire: Tire) -> str:
-    """The tire model of a tire file (its ``[tire] model``: ``"ring"``, ``"cross-section"``, ...)."""
-    return tire_model(tire).kind
-
-
-def is_cross_section(tire: Tire) -> bool:
-    """Whether the tire is a cross-section tire (``[tire] model = "cross-section"``)."""
-    return model_name(tire) == "cross-section"
-
-
 def build_fet(tire: Tire) -> FETModel:
     """The assembled ring FE tire (fast; not cached)."""
     return ring_model.build_fet(load_tire(tire))

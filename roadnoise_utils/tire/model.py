@@ -51,6 +51,7 @@ DEFAULT_FREQS = np.arange(0.0, 400.0 + 0.5, 1.0)
 
 #: Optional capabilities a tire model may have, with what each gives.
 CAPABILITIES = {
+    "fe_mesh": "an FE mesh of its own (its size, the paper's 'about 8000 DOF'; FRFs read from files have none)",
     "hub_transfer": "hub transfer function G_H (the moving hub, the quarter car and the whole car need it)",
     "modal_reduction": "modal reduction of the paper's Fig. 4 (identified damping, frozen moduli, modal H_i)",
     "loaded_modes": "eigenmodes of the loaded FE tire",
@@ -303,6 +304,10 @@ class TireModel(ABC):
     def degrees_of_freedom(self) -> str:
         """The size of the model's FE problem, as printed in the models' comparison."""
         return "-"
+
+    def equivalent_dof(self) -> int:
+        """Degrees of freedom of a 3-D FE mesh of the model's resolution (the paper's "about 8000 DOF")."""
+        raise NotApplicable(self.kind, "fe_mesh")
 
     @abstractmethod
     def frf_runs(self) -> tuple[Callable | ModuleType, ...]:

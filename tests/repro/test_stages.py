@@ -88,7 +88,7 @@ def test_the_stages_run_the_tire_model_its_file_names():
     """A cross-section tire file runs its own static and footprint solves behind the same stage
     functions, and a stage whose capability it lacks says so before any work."""
     static = stages.solve_static(CROSS_SECTION)
-    assert isinstance(static, SectionStaticState) and stages.model_name(CROSS_SECTION) == "cross-section"
+    assert isinstance(static, SectionStaticState) and ru.tire_model(CROSS_SECTION).kind == "cross-section"
     visco = stages.frf_visco(CROSS_SECTION)
     assert visco.H.shape == (static.tasselli.n, stages.DEFAULT_FREQS.size)
     part, computed = _computed_during(lambda: stages.frf_visco(CROSS_SECTION, freqs=[0.0, 80.0, 250.0]))

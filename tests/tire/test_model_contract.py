@@ -100,6 +100,30 @@ def test_a_capability_works_or_says_not_applicable_by_name(model):
         model.has("telepathy")
 
 
+#: Each optional capability -> a call of the method that needs it.
+CAPABILITY_CALLS = {
+    "fe_mesh": lambda m: m.equivalent_dof(),
+    "cavity": lambda m: m.air_cavity(),
+    "one_sided_cleat": lambda m: m.one_sided_setup(ru.experiments.one_sided_conditions()),
+    "released_hub": lambda m: m.released_hub(m.case("flat"), np.array([10.0]), 30.0, 2e4, 1e3),
+    "rolling_cavity": lambda m: m.rolling_cavity_frfs(m.case("flat"), np.array([10.0]), 1.0),
+}
+
+
+@pytest.mark.parametrize("capability", sorted(CAPABILITY_CALLS))
+def test_a_method_of_a_capability_the_model_lacks_says_so_by_name(model, capability):
+    """The method itself (not only :meth:`require`) refuses with the capability's name; a model that has
+    it answers the cheap ones (its mesh size, its air cavity)."""
+    call = CAPABILITY_CALLS[capability]
+    if not model.has(capability):
+        with pytest.raises(NotApplicable, match=f"not applicable: {capability}"):
+            call(model)
+    elif capability == "fe_mesh":
+        assert call(model) > 1000
+    elif capability == "cavity":
+        assert call(model).area > 0 and call(model).mean_radius > 0
+
+
 def test_the_replace_of_a_sweep_gives_the_same_model_kind(model):
     variant = model.replace(name="variant")
     assert type(variant) is type(model) and variant.name == "variant" and variant.kind == model.kind

@@ -43,7 +43,9 @@ class CrossSectionModel(TireModel):
     """The layered waveguide tire built from its construction (:mod:`roadnoise_utils.tire.section_model`)."""
 
     kind = "cross-section"
-    capabilities = frozenset({"hub_transfer", "modal_reduction", "direct_response", "one_sided_cleat", "cavity"})
+    capabilities = frozenset(
+        {"fe_mesh", "hub_transfer", "modal_reduction", "direct_response", "one_sided_cleat", "cavity"}
+    )
     contact_dt = CONTACT_DT
 
     @classmethod
@@ -56,6 +58,11 @@ class CrossSectionModel(TireModel):
 
     def degrees_of_freedom(self) -> str:
         return f"{stages.section_tire(self.spec).mesh.n_dof} x {self.spec.mesh.harmonics + 1} harmonics"
+
+    def equivalent_dof(self) -> int:
+        """Its free cross-section DOF at 2N + 1 stations round the wheel (N harmonics)."""
+        tire = stages.section_tire(self.spec)
+        return int(tire.ops.free.size * (2 * tire.harmonics + 1))
 
     def rim_side_mass(self) -> float:
         """0 kg: its :math:`G_H` holds the inertia of the clamped bead nodes (0.06 kg on the 165/65 R14)."""

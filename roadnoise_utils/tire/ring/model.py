@@ -35,6 +35,7 @@ class RingModel(TireModel):
     kind = "ring"
     capabilities = frozenset(
         {
+            "fe_mesh",
             "hub_transfer",
             "modal_reduction",
             "loaded_modes",
@@ -60,6 +61,9 @@ class RingModel(TireModel):
 
     def degrees_of_freedom(self) -> str:
         return f"{self.build_fet().n_dof}"
+
+    def equivalent_dof(self) -> int:
+        return int(self.build_fet().n_dof)
 
     def rim_side_mass(self) -> float:
         """:attr:`~roadnoise_utils.tire.ring_model.FETModel.hub_vertical_mass` (kg)."""
