@@ -22,8 +22,8 @@ import time
 import tracemalloc
 
 import roadnoise_utils as ru
-from roadnoise_utils.response import one_sided
 from roadnoise_utils.road.cleat import cleat_profile
+from roadnoise_utils.tire.ring import one_sided
 
 
 def timed(repeats: int, fn, *args, **kwargs) -> tuple[list[float], object]:
@@ -78,7 +78,7 @@ def main() -> None:
         )
         rows.append((f"linear RM chain, {label}", spec.mesh.n_elements, t, out.peak_force, out.result.force.size))
     t, (_, force) = timed(
-        args.repeats, ru.response.fe_cleat_response, fet_linear, drum, cleat.dynamic_speed, cleat.height, cleat.base,
+        args.repeats, ru.tire.ring.fe_reference.fe_cleat_response, fet_linear, drum, cleat.dynamic_speed, cleat.height, cleat.base,
         cleat.shape, conditions.distance,
     )  # fmt: skip
     rows.append(
@@ -98,12 +98,12 @@ def main() -> None:
 
 def cross_section_rows(tire: str, repeats: int, conditions) -> list[tuple]:
     """The cross-section tire's one-sided runs: its harmonics' reduction, the quasi-static and the 30 km/h run."""
-    from roadnoise_utils.response import section_one_sided
-    from roadnoise_utils.tire import section_stepping
+    from roadnoise_utils.tire.cross_section import one_sided as section_one_sided
+    from roadnoise_utils.tire.cross_section import stepping as section_stepping
 
     cleat = conditions.cleat
     built = ru.section_stages.section_tire(tire)
-    static = ru.section_stages.section_static(tire, "drum", drum_radius=cleat.drum_radius)
+    static = ru.stages.solve_static(tire, "drum", drum_radius=cleat.drum_radius)
     profile = cleat_profile(cleat.height, cleat.base, cleat.shape)
     label = "cross-section"
     t, reduced = timed(1, section_stepping.reduce_all, built, 400.0)

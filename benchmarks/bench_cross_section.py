@@ -8,7 +8,7 @@ Run on demand (never as a timed test)::
 Times, as ranges over the repeats (shared machines are noisy), of both tire models of the
 165/65 R14: building the model, the loaded static solve on the flat road, and the footprint
 FRFs 0-400 Hz every 1 Hz (cross-section: the footprint receptance and hub transfer of
-:mod:`roadnoise_utils.response.section_footprint`; ring: :func:`roadnoise_utils.response.frf.frf_visco`,
+:mod:`roadnoise_utils.tire.cross_section.footprint`; ring: :func:`roadnoise_utils.tire.ring.frf.frf_visco`,
 the direct sweep of the same quantity), and the paper's modal reduction (Fig. 4) with the
 modal FRFs it gives in place of the direct sweep. Peak memory by ``tracemalloc`` (Python allocations,
 numpy arrays included) of the last repeat of each step.
@@ -24,8 +24,10 @@ import tracemalloc
 import numpy as np
 
 import roadnoise_utils as ru
-from roadnoise_utils.response import frf, modal_reduction, section_footprint, section_modal
-from roadnoise_utils.tire import section_static, static
+from roadnoise_utils.tire.cross_section import footprint as section_footprint
+from roadnoise_utils.tire.cross_section import modal as section_modal
+from roadnoise_utils.tire.cross_section import static as section_static
+from roadnoise_utils.tire.ring import frf, modal_reduction, static
 
 
 def timed(repeats: int, fn, *args, **kwargs) -> tuple[list[float], object, float]:

@@ -21,7 +21,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 import roadnoise_utils as ru
-from roadnoise_utils.tire.ring_model import UZ
+from roadnoise_utils.tire.ring.mechanics import UZ
 
 
 def best_of(fn, repeat: int) -> tuple[float, object]:

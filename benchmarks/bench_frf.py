@@ -19,7 +19,7 @@ import numpy as np
 import scipy.sparse.linalg as spla
 
 import roadnoise_utils as ru
-from roadnoise_utils.response.loaded import loaded_tire
+from roadnoise_utils.tire.ring.loaded import loaded_tire
 
 
 def timed(fn):

@@ -64,7 +64,7 @@ n_modes = 60
 # %%
 # Load and validate the tire; show every parameter with its unit and valid range
 tire = ru.load_tire(tire_name)
-ru.tire.tire_table(tire)
+ru.tire.ring.spec.tire_table(tire)
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -150,7 +150,7 @@ plt.show()
 # %%
 # NBVAL_CHECK_OUTPUT
 # Convergence with the mesh: relative error for 60 ... 480 elements
-conv = ru.tire.ring_convergence(tire, meshes=(30, 60, 120, 300))
+conv = ru.tire.ring.closed_form.ring_convergence(tire, meshes=(30, 60, 120, 300))
 print(conv.to_string(float_format=lambda v: f"{v:+.2e}"))
 
 # %% [markdown]
@@ -175,7 +175,7 @@ drum = ru.stages.solve_static(tire, road="drum", drum_radius=drum_radius)
 # %%
 # NBVAL_CHECK_OUTPUT
 # Key numbers of both static states; the force balance is exact to round-off
-summary = ru.tire.static_summary({"flat road": flat, f"drum R = {drum_radius:.2f} m": drum})
+summary = ru.tire.ring.static.static_summary({"flat road": flat, f"drum R = {drum_radius:.2f} m": drum})
 print(summary.to_string(float_format=lambda v: f"{v:.4g}"))
 
 # %%

@@ -334,10 +334,10 @@ assert abs(abs(visco.G_H[0]) / static.vertical_stiffness - 1) < 0.01
 # own small problem, and only the footprint, whose points follow the road, couples them. Its
 # loaded modes — the paper's FET70Hz eigenmodes, rim fixed and footprint held — come from a
 # component-mode synthesis (MacNeal 1971; Craig & Kurdila, *Fundamentals of Structural
-# Dynamics*, ch. 19), `ru.response.section_modal`:
+# Dynamics*, ch. 19), `ru.tire.cross_section.modal`:
 #
 # 1. the **free modes** of every harmonic (rim fixed, tread free) at the frozen moduli, up to
-#    `ru.response.section_modal.FREE_FACTOR` times twice the band: eigenvalues $\Lambda$, vertical shapes at the contact
+#    `ru.tire.cross_section.modal.FREE_FACTOR` times twice the band: eigenvalues $\Lambda$, vertical shapes at the contact
 #    points $\Psi$ (fore-aft even), vertical momentum $L$;
 # 2. the **residual flexibility** of all the rest at the contact points,
 #    $R = S(0) - \Psi\Lambda^{-1}\Psi^T$;

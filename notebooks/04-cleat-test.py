@@ -229,9 +229,7 @@ variants = {
 }
 for name, change in variants.items():
     spec = tire.replace(**change)
-    fet_variant = ru.build_fet(spec)
-    static_variant = ru.solve_static(fet_variant, road="drum", drum_radius=conditions.drum_radius)
-    peak = ru.experiments.cleat.quasi_static_peak(fet_variant, static_variant, height, base, conditions.shape)
+    peak = ru.experiments.cleat.quasi_static_peak(spec, height, base, conditions.shape, conditions.drum_radius)
     print(f"{name:36s} quasi-static peak {peak:6.0f} N")
 
 # %% [markdown]

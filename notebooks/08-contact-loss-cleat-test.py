@@ -229,11 +229,11 @@ for speed, dt in ((0.1, 5e-3), (0.03, 1e-2)):
 # The tire built from its cross-section (notebook 09) has one-sided contact in its static solve
 # (active set on the harmonic-sum compliance of its contact grid). Holding the deflection
 # instead of the load and moving the cleat under the footprint step by step gives its
-# quasi-static base curve (`ru.response.section_one_sided`): every point of the grid free to
+# quasi-static base curve (`ru.tire.cross_section.one_sided`): every point of the grid free to
 # lift off, frictionless.
 #
 # Its 30 km/h run steps the tire's dynamics at the contact grid in time
-# (`ru.tire.section_stepping`): the tire is axisymmetric, so each of its 401 harmonics is an
+# (`ru.tire.cross_section.stepping`): the tire is axisymmetric, so each of its 401 harmonics is an
 # independent small system (its Ritz basis of the frequency domain, ~60-130 coordinates) until
 # the contact couples them; every compound keeps its Prony series, as in the ring's run. Two
 # things differ from the ring's run, both forced by the model:
@@ -251,7 +251,7 @@ for speed, dt in ((0.1, 5e-3), (0.03, 1e-2)):
 #   system: the trapezoidal rule leaves a non-decaying oscillation at the Nyquist frequency in
 #   the contact forces, and with lift-off a chatter that pumps energy in: the footprint never
 #   settles after the cleat. The generalised-α scheme (spectral radius 0.5 at infinite
-#   frequency, `ru.tire.section_stepping.SPECTRAL_RADIUS`) damps it, with little damping in the
+#   frequency, `ru.tire.cross_section.stepping.SPECTRAL_RADIUS`) damps it, with little damping in the
 #   band (the frozen check below measures what is left).
 #
 # The frozen check below measures both changes against the frequency-domain footprint solve.
@@ -267,7 +267,7 @@ section_tire_name = f"{tire_name}_cross_section"
 section = ru.experiments.one_sided_cleat_test(section_tire_name, conditions=conditions)
 section_raw = ru.experiments.one_sided_cleat.raw_dynamic(section_tire_name, conditions=conditions)
 section_frozen = ru.experiments.frozen_check(section_tire_name, conditions=conditions)
-section_stepper = ru.tire.section_stepping.HarmonicStepper(
+section_stepper = ru.tire.cross_section.stepping.HarmonicStepper(
     ru.section_stages.section_tire(section_tire_name),
     section_raw.dt,
     ru.section_stages.harmonic_reductions(section_tire_name),

@@ -51,8 +51,8 @@ import pandas as pd
 import roadnoise_utils as ru
 from roadnoise_utils.experiments import cross_section as chapter
 from roadnoise_utils.figures import cross_section as figures
-from roadnoise_utils.tire import section_checks
-from roadnoise_utils.tire.section_static import force_balance, loaded_displacement, section_summary
+from roadnoise_utils.tire.cross_section import checks as section_checks
+from roadnoise_utils.tire.cross_section.static import force_balance, loaded_displacement, section_summary
 
 ru.set_style()
 pd.set_option("display.width", 160)
@@ -183,12 +183,12 @@ plt.show()
 # %%
 # NBVAL_CHECK_OUTPUT
 # The loaded cross-section tire on the flat road and on the 1.25 m drum, beside the ring model
-flat = ru.section_stages.section_static(tire_name, "flat")
+flat = ru.stages.solve_static(tire_name, "flat")
 drum_radius = ru.experiments.cleat_conditions().drum_radius
-drum = ru.section_stages.section_static(tire_name, "drum", drum_radius=drum_radius)
+drum = ru.stages.solve_static(tire_name, "drum", drum_radius=drum_radius)
 ring_flat = ru.stages.solve_static(ring_name, "flat")
 summary = pd.DataFrame({"cross-section, flat": section_summary(flat), "cross-section, drum": section_summary(drum)})
-summary["ring, flat"] = ru.tire.static_summary({"ring": ring_flat})["ring"].reindex(summary.index)
+summary["ring, flat"] = ru.tire.ring.static.static_summary({"ring": ring_flat})["ring"].reindex(summary.index)
 print(summary.to_string(float_format=lambda v: f"{v:.4g}"))
 assert max(force_balance(flat), force_balance(drum)) < 1e-9
 
@@ -225,7 +225,7 @@ plt.show()
 
 # %%
 # NBVAL_IGNORE_OUTPUT
-footprint = ru.section_stages.section_footprint(tire_name, "flat")
+footprint = ru.section_stages.section_footprint(tire_name, ru.section_stages.nominal_case(tire_name))
 ring_frf = ru.stages.frf_visco(ring_name, "flat")
 
 # %%

@@ -34,25 +34,26 @@ from . import analysis, experiments, figures, guards, response, rm, road, tire, 
 from .experiments.paper_defaults import cleat_input, solve_static
 from .repro import cache, claims, collection, stages
 from .repro.style import set_style
-from .response.frf import frf_visco
-from .response.modal_reduction import ModalReduction, identify_modes, modal_reduction
-from .response.modes import LoadedModes, loaded_modes
+from .response.modal_reduction import ModalReduction, identify_modes
 from .response.uff import read_uff58, write_uff58
 from .rm.fitting import FitSet, RationalFit, fit_tasselli, vector_fit
 from .rm.realisation import assemble_fixed_hub, realize
 from .rm.simulation import SimulationResult, simulate
 from .road import textures
 from .road.input import RoadInput
-from .tire.closed_form import ring_check, ring_frequencies, ring_parameters
 from .tire.cross_section import model as _cross_section_model  # noqa: F401 - registers the model
 from .tire.cross_section import stages as section_stages
 from .tire.frf_file import model as _frf_file_model  # noqa: F401 - registers the model
 from .tire.frf_file.export import export_frf_files
 from .tire.model import Footprint, FRFResult, LoadCase, NotApplicable, TireModel, tire_model
 from .tire.ring import model as _ring_model  # noqa: F401 - registers the model
-from .tire.ring_model import FETModel, build_fet
-from .tire.spec import TireSpec, load_tire
-from .tire.static import StaticState, load_deflection
+from .tire.ring.closed_form import ring_check, ring_frequencies, ring_parameters
+from .tire.ring.frf import frf_visco
+from .tire.ring.mechanics import FETModel, build_fet
+from .tire.ring.modal_reduction import modal_reduction
+from .tire.ring.modes import LoadedModes, loaded_modes
+from .tire.ring.spec import TireSpec, load_tire
+from .tire.ring.static import StaticState, load_deflection
 from .tire.tasselli import Tasselli
 
 __version__ = "0.1.0"

@@ -20,8 +20,8 @@ LAYERS = [
     ["tire"],
     ["road"],
     ["response"],
-    # the tire models: the pipeline's interface (tire.model) over each model's numerics
-    ["tire.ring.model", "tire.cross_section.model", "tire.cross_section.stages", "tire.frf_file"],
+    # the tire models, one folder each, implementing the interface of tire.model
+    ["tire.ring", "tire.cross_section", "tire.frf_file"],
     ["rm"],
     ["vehicle"],
     ["repro.style", "repro.inputs"],
@@ -80,6 +80,63 @@ def test_data_flows_one_way(name):
             assert _layer(target) <= own, f"{name} (layer {own}) imports {target} (layer {_layer(target)})"
 
 
+#: The tire models' folders (``tire/<model>/``): only they know which model they are.
+MODEL_FOLDERS = sorted(p.parent.name for p in (PACKAGE_DIR / "tire").glob("*/__init__.py"))
+#: Modules outside the model folders that import one, and why: the registry, and a model's own chapter.
+MODEL_IMPORTS = {
+    "__init__": set(MODEL_FOLDERS),  # imports every model so that it registers; the ring FE tire's entry points
+    "experiments.paper_defaults": {"ring"},  # ru.solve_static(fet): the ring FE tire with the paper's drum
+    "figures.fe_tire_model": {"ring"},  # notebook 01, the ring tire's chapter: its mesh, shapes and modes
+    "figures.cross_section": {"cross_section"},  # notebook 09, the cross-section tire's chapter: its layers
+    "experiments.cross_section": {"cross_section"},  # notebook 09's tables of its construction
+}
+
+
+def _model_of(module: str) -> str | None:
+    parts = module.split(".")
+    return parts[1] if len(parts) > 1 and parts[0] == "tire" and parts[1] in MODEL_FOLDERS else None
+
+
+def _all_imports(name: str, path: Path) -> set[str]:
+    """Every package module ``name`` imports (relative and absolute, at the top or inside functions)."""
+    found = set()
+    for module, names in _imports(name, path):
+        found |= {f"{module}.{n}" if f"{module}.{n}" in MODULES else module for n in names} if module else set(names)
+    for node in ast.walk(ast.parse(path.read_text())):
+        if isinstance(node, ast.ImportFrom) and not node.level and (node.module or "").startswith("roadnoise_utils."):
+            found.add(node.module.removeprefix("roadnoise_utils."))
+    return found
+
+
+@pytest.mark.parametrize("name", sorted(MODULES))
+def test_only_the_registry_and_a_models_chapter_import_a_model(name):
+    own = _model_of(name)
+    allowed = {own} if own else MODEL_IMPORTS.get(name, set())
+    imported = {_model_of(m) for m in _all_imports(name, MODULES[name])} - {None}
+    assert imported <= allowed, f"{name} imports the model folders {sorted(imported - allowed)}"
+
+
+#: What a type branch looks like: a test of a model's kind or of a model's, spec's or state's type.
+MODEL_KINDS = ("ring", "cross-section", "frf-file")
+
+
+@pytest.mark.parametrize("name", sorted(n for n in MODULES if not _model_of(n) and n not in ("tire.model", "__init__")))
+def test_no_type_branch_outside_the_models(name):
+    """Outside ``tire/<model>/`` and the registry (``tire.model``) nothing asks which model it holds."""
+    tree = ast.parse(MODULES[name].read_text())
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Compare):
+            texts = [c.value for c in [node.left, *node.comparators] if isinstance(c, ast.Constant)]
+            assert not set(texts) & set(MODEL_KINDS), f"{name}:{node.lineno} compares a model name: {ast.unparse(node)}"
+        if isinstance(node, ast.Call) and ast.unparse(node.func) in ("isinstance", "hasattr", "type"):
+            named = {n.id for n in ast.walk(node) if isinstance(n, ast.Name)} | {
+                n.attr for n in ast.walk(node) if isinstance(n, ast.Attribute)
+            }
+            model_types = {n for n in named if re.fullmatch(r"\w*(Spec|State|Tire|Model|FETModel)", n)} - {"TireModel"}
+            assert not model_types, f"{name}:{node.lineno} tests a model's type: {ast.unparse(node)}"
+    assert not re.search(r"is_cross_section|model_name", MODULES[name].read_text()), name
+
+
 @pytest.mark.parametrize("name", sorted(MODULES))
 def test_no_private_name_crosses_modules(name):
     for module, names in _imports(name, MODULES[name]):
@@ -102,7 +159,9 @@ def test_modules_stay_short(name):
 
 def test_tests_mirror_the_package_folders():
     tests = Path(__file__).parent
-    for folder in ("tire", "road", "response", "rm", "vehicle", "experiments", "repro"):
+    folders = ["tire", "road", "response", "rm", "vehicle", "experiments", "repro"]
+    folders += [f"tire/{p.parent.name}" for p in sorted((PACKAGE_DIR / "tire").glob("*/__init__.py"))]  # the models
+    for folder in folders:
         assert (PACKAGE_DIR / folder).is_dir() and (tests / folder).is_dir(), folder
         # test_<module>.py, or test_<module>_contract.py for an interface's contract over its implementations
         names = {p.stem.removeprefix("test_").removesuffix("_contract") for p in (tests / folder).glob("test_*.py")}

@@ -15,7 +15,7 @@ What the band sets, stage by stage, for a band ``B``:
 * **modal reduction** (paper Fig. 4) with loaded modes to at least ``2 B``.
 
 Both models are compared band-limited the same way: flat to ``B - TAPER`` and zero at ``B``
-(:func:`.response.fe_reference.band_window`), so no FRF is needed above its band. On the cleat
+(:func:`roadnoise_utils.response.band_limit.band_window`), so no FRF is needed above its band. On the cleat
 the reference is the direct FE response (no reduction, no fit); on the rough road the
 frequency-domain hub-force PSD of the direct FRFs (road uniform across the width).
 """
@@ -31,7 +31,7 @@ from .. import guards
 from ..analysis import relative_rms_error
 from ..repro import stages
 from ..repro.inputs import DEFAULT_FREQS
-from ..response.fe_reference import frequency_domain_response
+from ..response.band_limit import frequency_domain_response
 from ..response.modal_reduction import ModalReduction
 from ..rm.fitting import FitSet
 from ..rm.realisation import assemble_fixed_hub

@@ -12,7 +12,7 @@ one"; after the cleat has left, a decay dominated by the 80 Hz first vertical mo
 default; :func:`cleat_test` runs the RM chain (fitted state-space tire,
 :func:`roadnoise_utils.rm.simulation.simulate`) and, on request, the same passage straight
 from the viscoelastic FE model in the frequency domain (no modal reduction, no fitting,
-:func:`roadnoise_utils.response.fe_reference.fe_cleat_response`).
+:func:`roadnoise_utils.tire.ring.fe_reference.fe_cleat_response`).
 """
 
 from __future__ import annotations
@@ -27,14 +27,12 @@ from .. import guards
 from ..analysis import damped_components, force_peaks, relative_rms_error
 from ..repro import stages
 from ..repro.cache import cached
-from ..response.fe_reference import band_limited, record_length
-from ..response.frf import frf_visco
+from ..repro.stages import Tire
+from ..response.band_limit import band_limited, record_length
 from ..rm.simulation import ModalSections, SimulationResult, modal_sections, simulate
 from ..road.cleat import cleat_input
 from ..road.input import BAND, RoadInput
-from ..tire.ring_model import FETModel
-from ..tire.spec import TireSpec
-from ..tire.static import StaticState
+from ..tire.model import Footprint, ModelSpec, tire_model
 from .conditions import load_conditions, resolve
 
 #: The paper's tire for this test.
@@ -187,11 +185,11 @@ class CleatTest:
 
     Attributes
     ----------
-    tire : TireSpec
+    tire : ModelSpec
         The tire.
     conditions : CleatConditions
         The resolved test conditions.
-    static : StaticState
+    static : Footprint
         The tire loaded on the drum.
     system : control.StateSpace
         The fixed-hub state-space tire fitted on the drum footprint (Eq. 3-4).
@@ -203,9 +201,9 @@ class CleatTest:
         The dynamic passage from the FE model and from the RM chain, if asked for.
     """
 
-    tire: TireSpec
+    tire: ModelSpec
     conditions: CleatConditions
-    static: StaticState
+    static: Footprint
     system: control.StateSpace
     sections: ModalSections
     quasi_static: CleatRun
@@ -219,23 +217,30 @@ class CleatTest:
 
     def to_frame(self) -> pd.DataFrame:
         """The test's key numbers, one row per quantity, in the paper's units."""
-        rows = {
-            "quasi-static peak (N)": self.quasi_static.peak_force,
-            f"peak at {self.conditions.dynamic_kmh:.0f} km/h (N)": self.dynamic.peak_force,
-            "dynamic / quasi-static": self.ratio,
-            "decay: leading component (Hz)": float(self.dynamic.decay["frequency (Hz)"].iloc[0]),
-            "decay: its damping ratio": float(self.dynamic.decay["damping ratio"].iloc[0]),
-        }
+        rows = cleat_numbers(
+            self.quasi_static.peak_force, self.dynamic.peak_force, self.conditions.dynamic_kmh, self.dynamic.decay
+        )
         return pd.DataFrame({"ours": rows}).rename_axis("quantity")
 
 
-def footprint_entry(static: StaticState) -> float:
+def cleat_numbers(quasi_static_peak: float, dynamic_peak: float, dynamic_kmh: float, decay: pd.DataFrame) -> dict:
+    """A cleat test's key numbers (N, -, Hz): the two peaks, their ratio and the leading decay component."""
+    return {
+        "quasi-static peak (N)": quasi_static_peak,
+        f"peak at {dynamic_kmh:.0f} km/h (N)": dynamic_peak,
+        "dynamic / quasi-static": dynamic_peak / quasi_static_peak,
+        "decay: leading component (Hz)": float(decay["frequency (Hz)"].iloc[0]),
+        "decay: its damping ratio": float(decay["damping ratio"].iloc[0]),
+    }
+
+
+def footprint_entry(static: Footprint) -> float:
     """Distance travelled (m) at which a feature's leading edge reaches the footprint kernels."""
     t = static.tasselli
     return float(-np.max(t.node_x + t.node_dx_plus))
 
 
-def footprint_exit(static: StaticState, base: float) -> float:
+def footprint_exit(static: Footprint, base: float) -> float:
     """Distance travelled (m) at which a feature of length ``base`` (m) has left the footprint kernels."""
     t = static.tasselli
     return float(base - np.min(t.node_x - t.node_dx_minus))
@@ -248,7 +253,7 @@ DECAY_COMPONENTS = 6
 
 
 def analyse_run(
-    result: SimulationResult, static: StaticState, base: float, dynamic: bool, band: float = BAND
+    result: SimulationResult, static: Footprint, base: float, dynamic: bool, band: float = BAND
 ) -> CleatRun:
     """Peaks while the cleat crosses the footprint and, for a dynamic run, the free-decay components.
 
@@ -295,7 +300,7 @@ def in_band(components: pd.DataFrame, band: float) -> pd.DataFrame:
 
 def run_cleat(
     system: control.StateSpace | ModalSections,
-    static: StaticState,
+    static: Footprint,
     speed: float,
     height: float,
     base: float,
@@ -319,7 +324,7 @@ def rm_cleat_response(system, road: RoadInput, band: float = BAND, duration: flo
 
     The tassello inputs are zero-padded to ``duration`` s and simulated from rest, so the free
     decay is complete before the record ends; the force is band-limited by the same
-    :func:`roadnoise_utils.response.fe_reference.band_window` (zero phase) and cut back to the
+    :func:`roadnoise_utils.response.band_limit.band_window` (zero phase) and cut back to the
     road's length. Filtering a record cut short in mid-decay instead would smear the cut into
     the compared samples.
     """
@@ -328,7 +333,7 @@ def rm_cleat_response(system, road: RoadInput, band: float = BAND, duration: flo
 
 
 def cleat_test(
-    tire: str | TireSpec = PAPER_TIRE,
+    tire: str | ModelSpec = PAPER_TIRE,
     *,
     conditions: CleatConditions | None = None,
     n_poles: int | None = None,
@@ -338,7 +343,7 @@ def cleat_test(
 
     Parameters
     ----------
-    tire : str or TireSpec
+    tire : str or ModelSpec
         A tire file name or path, or a spec.
     conditions : CleatConditions, optional
         The test; default :func:`cleat_conditions` (the paper's).
@@ -386,7 +391,7 @@ def quasi_static_force(static_influence: np.ndarray, road: RoadInput) -> np.ndar
     return np.asarray(static_influence) @ road.u
 
 
-def row_influence(static: StaticState, static_influence: np.ndarray) -> pd.DataFrame:
+def row_influence(static: Footprint, static_influence: np.ndarray) -> pd.DataFrame:
     """Static influence summed over each row of tasselli, with the row's position (leading row first)."""
     t = static.tasselli
     rows = np.unique(t.row)
@@ -400,8 +405,14 @@ def row_influence(static: StaticState, static_influence: np.ndarray) -> pd.DataF
     )
 
 
-def quasi_static_peak(fet: FETModel, static: StaticState, height: float, base: float, shape: str = "triangle") -> float:
-    """Peak of :func:`quasi_static_force` for a cleat (N), from the FE model's static influences."""
-    h0 = frf_visco(fet, static, [0.0], progress=False).H[:, 0].real
+def quasi_static_peak(
+    tire: Tire, height: float, base: float, shape: str = "triangle", drum_radius: float = 1.25
+) -> float:
+    """Peak of :func:`quasi_static_force` for a cleat (N) on a drum of ``drum_radius`` (m), from the
+    tire's static influences :math:`H_i(0)` (any model; its cached footprint and FRFs)."""
+    model = tire_model(tire)
+    case = model.case("drum", None, drum_radius)
+    static = model.load(case)
+    h0 = model.fixed_hub_frfs(case, np.array([0.0])).H[:, 0].real
     road = cleat_input(static, 0.1, height, base, shape, distance=(-0.08, 0.1))
     return float(quasi_static_force(h0, road).max())

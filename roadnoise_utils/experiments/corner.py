@@ -19,8 +19,7 @@ from ..rm.fitting import FitSet
 from ..rm.realisation import assemble_fixed_hub
 from ..rm.simulation import ModalSections, modal_sections
 from ..road.textures import RoadSpectrum
-from ..tire.spec import TireSpec
-from ..tire.static import StaticState
+from ..tire.model import Footprint, ModelSpec
 from ..vehicle.corner import CornerRun, corner_model, predicted_psd, run_corner, spectra
 from ..vehicle.quarter_car import QuarterCar, load_vehicle
 from .road import RoadTestConditions, road_test_conditions, texture_run
@@ -39,9 +38,9 @@ class CornerSetup:
     ----------
     vehicle : QuarterCar
         The corner (``data/vehicles``).
-    tire : TireSpec
+    tire : ModelSpec
         Its tire.
-    static : StaticState
+    static : Footprint
         The tire loaded on the flat road.
     fits, hub : FitSet
         Tassello fits (Eq. 1) and the hub fit :math:`G_H` (Eq. 6).
@@ -55,8 +54,8 @@ class CornerSetup:
     """
 
     vehicle: QuarterCar
-    tire: TireSpec
-    static: StaticState
+    tire: ModelSpec
+    static: Footprint
     fits: FitSet
     hub: FitSet
     tire_hub_mass: float

@@ -11,10 +11,10 @@ import pandas as pd
 
 from ..response.modal_reduction import identify_modes
 from ..tire.cross_section import stages as section_stages
+from ..tire.cross_section.dynamics import harmonic_modes
 from ..tire.cross_section.spec import LAYER_KINDS, CordLayer, CrossSectionSpec
+from ..tire.cross_section.static import SectionTire, section_summary
 from ..tire.model import tire_model
-from ..tire.section_dynamics import harmonic_modes
-from ..tire.section_static import SectionTire, section_summary
 
 
 def layer_table(spec: CrossSectionSpec) -> pd.DataFrame:
@@ -74,7 +74,8 @@ def convergence_table(tire: str | CrossSectionSpec, harmonics=(300, 400, 600), c
     cases += [("crown elements", c, {"mesh.crown_elements": c}) for c in crown]
     rows = []
     for what, value, change in cases:
-        state = section_stages.section_static(spec.replace(**change))
+        model = tire_model(spec.replace(**change))
+        state = model.load(model.case("flat"))
         s = section_summary(state)
         rows.append(
             {
@@ -163,7 +164,7 @@ def membrane_forces(tire: SectionTire) -> pd.DataFrame:
 
 def _thickness_jacobian(mesh, element: int, eta: np.ndarray) -> np.ndarray:
     """|dx/deta| at the middle of the element (m per unit eta)."""
-    from ..tire.waveguide import lagrange3
+    from ..tire.cross_section.waveguide import lagrange3
 
     nodes = mesh.elements[element]
     n_xi, _ = lagrange3(np.zeros(eta.size))

@@ -19,8 +19,7 @@ from ..analysis import relative_rms_error
 from ..repro import stages
 from ..rm.fitting import FitSet
 from ..rm.moving_hub import released_hub, rm_moving_hub
-from ..tire.model import tire_model
-from ..tire.spec import TireSpec
+from ..tire.model import ModelSpec, tire_model
 from .conditions import load_conditions, resolve
 
 #: The tire the check runs on by default: the quarter car's.
@@ -55,7 +54,7 @@ class MovingHubCheck:
 
     Attributes
     ----------
-    tire : TireSpec
+    tire : ModelSpec
         The tire.
     suspension : Suspension
         The hub's suspension.
@@ -69,7 +68,7 @@ class MovingHubCheck:
         The tassello fits and the hub fit the RM model uses.
     """
 
-    tire: TireSpec
+    tire: ModelSpec
     suspension: Suspension
     freqs: np.ndarray
     fe_hub: np.ndarray
@@ -89,7 +88,7 @@ class MovingHubCheck:
 
 
 def moving_hub_check(
-    tire: str | TireSpec = CHECK_TIRE,
+    tire: str | ModelSpec = CHECK_TIRE,
     freqs: np.ndarray | None = None,
     suspension: Suspension | None = None,
 ) -> MovingHubCheck:

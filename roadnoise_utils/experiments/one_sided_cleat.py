@@ -4,7 +4,7 @@ The paper compares its linear RM chain with a drum test (*Validation of the Mode
 Hub*, Fig. 8-9): 850 N measured quasi-static against 1200 N simulated, a dynamic peak about
 2.2 times the quasi-static one at 30 km/h. In that test the tread next to the 15 mm cleat lifts
 off the drum, which no linear model can do. Here the FE tire (not the RM chain) runs the test
-with one-sided tread contact (:mod:`roadnoise_utils.response.one_sided`), on a mesh refined
+with one-sided tread contact (:mod:`roadnoise_utils.tire.contact`), on a mesh refined
 along the circumference (``[one_sided] n_elements`` of ``data/conditions/cleat_test.toml``),
 and is compared with the *measured* values; the linear chain stays compared with the paper's
 *simulation* (:mod:`.cleat`).
@@ -22,12 +22,11 @@ from .. import guards
 from ..analysis import damped_components, force_peaks, relative_rms_error
 from ..repro import stages
 from ..repro.stages import Tire
-from ..response.fe_reference import band_limited
-from ..response.one_sided import ContactRun
+from ..response.band_limit import band_limited
 from ..rm.simulation import modal_sections
-from ..tire.model import ContactSetup, Footprint, tire_model
-from ..tire.spec import TireSpec
-from .cleat import DECAY_COMPONENTS, PAPER_TIRE, CleatConditions, cleat_conditions, in_band, run_cleat
+from ..tire.contact import ContactRun
+from ..tire.model import ContactSetup, Footprint, ModelSpec, tire_model
+from .cleat import DECAY_COMPONENTS, PAPER_TIRE, CleatConditions, cleat_conditions, cleat_numbers, in_band, run_cleat
 from .conditions import load_conditions, resolve
 
 #: Largest mesh the one-sided runs accept (elements around the circumference).
@@ -127,12 +126,9 @@ class OneSidedCleatTest:
 
     def to_frame(self) -> pd.DataFrame:
         """Key numbers, one row per quantity (paper units)."""
+        kmh = self.conditions.cleat.dynamic_kmh
         rows = {
-            "quasi-static peak (N)": self.quasi_static.peak_force,
-            f"peak at {self.conditions.cleat.dynamic_kmh:.0f} km/h (N)": self.dynamic.peak_force,
-            "dynamic / quasi-static": self.ratio,
-            "decay: leading component (Hz)": float(self.decay["frequency (Hz)"].iloc[0]),
-            "decay: its damping ratio": float(self.decay["damping ratio"].iloc[0]),
+            **cleat_numbers(self.quasi_static.peak_force, self.dynamic.peak_force, kmh, self.decay),
             "contact points, static": int(self.static.contact.sum()),
             "contact points, fewest (quasi-static)": int(self.quasi_static.contact_points.min()),
             f"contact points, fewest ({self.conditions.cleat.dynamic_kmh:.0f} km/h)": int(
@@ -142,7 +138,7 @@ class OneSidedCleatTest:
         return pd.DataFrame({"one-sided contact": rows}).rename_axis("quantity")
 
 
-def refined_tire(tire: Tire, n_elements: int) -> TireSpec:
+def refined_tire(tire: Tire, n_elements: int) -> ModelSpec:
     """The ring tire with ``n_elements`` around the circumference (everything else unchanged)."""
     return tire_model(tire).refined(n_elements).spec
 

@@ -2,7 +2,7 @@
 
 ``ru.solve_static(fet, road="drum")`` and ``ru.cleat_input(static, speed)`` need the drum and
 the cleat of the paper's test when none is given. The numerics
-(:func:`roadnoise_utils.tire.static.solve_static`,
+(:func:`roadnoise_utils.tire.ring.static.solve_static`,
 :func:`roadnoise_utils.road.cleat.cleat_input`) take them explicitly; these two functions fill
 the ones left at ``None`` from ``data/conditions/cleat_test.toml``
 (:func:`.cleat.cleat_conditions`) and call them.
@@ -12,21 +12,21 @@ from __future__ import annotations
 
 from ..road import cleat as road_cleat
 from ..road.input import RoadInput
-from ..tire import static as tire_static
-from ..tire.ring_model import FETModel
-from ..tire.static import StaticState
+from ..tire.ring import static as tire_static
+from ..tire.ring.mechanics import FETModel
+from ..tire.ring.static import StaticState
 from .cleat import cleat_conditions
 
 
 def solve_static(
     fet: FETModel, road: str = "flat", load: float | None = None, drum_radius: float | None = None
 ) -> StaticState:
-    """:func:`roadnoise_utils.tire.static.solve_static`, a drum defaulting to the paper's (R = 1.25 m).
+    """:func:`roadnoise_utils.tire.ring.static.solve_static`, a drum defaulting to the paper's (R = 1.25 m).
 
     Parameters
     ----------
     fet : FETModel
-        The tire (:func:`roadnoise_utils.tire.ring_model.build_fet`).
+        The tire (:func:`roadnoise_utils.tire.ring.mechanics.build_fet`).
     road : {"flat", "drum"}
         Road surface.
     load : float, optional

@@ -16,8 +16,7 @@ from .. import guards
 from ..repro import stages
 from ..road.input import RoadInput, contact_tracks, texture_input, texture_length
 from ..road.textures import RoadSpectrum, load_texture
-from ..tire.spec import TireSpec
-from ..tire.static import StaticState
+from ..tire.model import Footprint, ModelSpec
 from .conditions import load_conditions, resolve
 
 
@@ -91,11 +90,11 @@ class RoadTest:
 
     Attributes
     ----------
-    tire : TireSpec
+    tire : ModelSpec
         The tire.
     conditions : RoadTestConditions
         The resolved test.
-    static : StaticState
+    static : Footprint
         The tire loaded on the flat road.
     spectra : dict of str to RoadSpectrum
         Each texture's spectrum.
@@ -105,17 +104,15 @@ class RoadTest:
         Whether the roads are 3D (one coherent track per belt strip) or uniform across the width.
     """
 
-    tire: TireSpec
+    tire: ModelSpec
     conditions: RoadTestConditions
-    static: StaticState
+    static: Footprint
     spectra: dict[str, RoadSpectrum]
     inputs: dict[str, RoadInput]
     lateral: bool
 
 
-def texture_run(
-    static: StaticState, spectrum: RoadSpectrum, conditions: RoadTestConditions, lateral: bool
-) -> RoadInput:
+def texture_run(static: Footprint, spectrum: RoadSpectrum, conditions: RoadTestConditions, lateral: bool) -> RoadInput:
     """The tassello inputs of one texture under the test's speed, duration, seed and sample rate.
 
     The generated road comes from the stage cache (:func:`roadnoise_utils.repro.stages.texture_road`):
@@ -137,7 +134,7 @@ def texture_run(
 
 
 def road_test(
-    tire: str | TireSpec = "195_65R15", conditions: RoadTestConditions | None = None, lateral: bool = True
+    tire: str | ModelSpec = "195_65R15", conditions: RoadTestConditions | None = None, lateral: bool = True
 ) -> RoadTest:
     """The road test's inputs on a tire: each texture flowing through its flat-road footprint."""
     spec = stages.load_tire(tire)

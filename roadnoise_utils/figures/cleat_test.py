@@ -8,7 +8,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
 
-from ..tire.static import StaticState
+from ..tire.model import Footprint
 from .common import MM, paper_lines
 
 if TYPE_CHECKING:
@@ -39,7 +39,7 @@ def plot_cleat_runs(
     return ax
 
 
-def plot_tassello_inputs(road, static: StaticState, rows: list[int], ax: plt.Axes | None = None) -> plt.Axes:
+def plot_tassello_inputs(road, static: Footprint, rows: list[int], ax: plt.Axes | None = None) -> plt.Axes:
     """Displacement histories of the centre-column tassello of some rows (the road flowing through)."""
     if ax is None:
         _, ax = plt.subplots(figsize=(9, 3.5))
@@ -55,7 +55,7 @@ def plot_tassello_inputs(road, static: StaticState, rows: list[int], ax: plt.Axe
     return ax
 
 
-def plot_row_influence(rows: pd.DataFrame, static: StaticState, base: float, ax: plt.Axes | None = None) -> plt.Axes:
+def plot_row_influence(rows: pd.DataFrame, static: Footprint, base: float, ax: plt.Axes | None = None) -> plt.Axes:
     """Static influence of each row along the footprint, with the cleat drawn at the two peak positions."""
     if ax is None:
         _, ax = plt.subplots(figsize=(8, 3.8))

@@ -6,13 +6,13 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.patches import Rectangle
 
-from ..tire.static import StaticState
+from ..tire.model import Footprint
 
 MM = 1e3  # m -> mm
 
 
 def plot_tassello_map(
-    static: StaticState,
+    static: Footprint,
     values: np.ndarray,
     label: str,
     ax: plt.Axes | None = None,

@@ -11,7 +11,7 @@ from .common import paper_lines
 
 if TYPE_CHECKING:
     from ..experiments.cleat import CleatRun
-    from ..response.one_sided import ContactRun
+    from ..tire.contact import ContactRun
 
 
 def plot_contact_runs(

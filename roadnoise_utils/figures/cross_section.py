@@ -12,7 +12,7 @@ from matplotlib.collections import PolyCollection
 from .common import MM
 
 if TYPE_CHECKING:
-    from ..tire.section_static import SectionStaticState, SectionTire
+    from ..tire.cross_section.static import SectionStaticState, SectionTire
 
 #: Colours of the construction layers (unknown names cycle through the tab10 map).
 LAYER_COLOURS = {
@@ -29,7 +29,7 @@ LAYER_COLOURS = {
 
 def _ply_polygons(tire: SectionTire) -> tuple[list[np.ndarray], list[str]]:
     """One polygon per ply of every element, in (y, r) mm, and its layer name."""
-    from ..tire.waveguide import lagrange3
+    from ..tire.cross_section.waveguide import lagrange3
 
     mesh = tire.mesh
     pts = mesh.points
@@ -87,7 +87,7 @@ def plot_cross_section(tire: SectionTire, ax: plt.Axes | None = None, mesh_lines
 def plot_three_d(tire: SectionTire, state: SectionStaticState | None = None, displacement=None, scale: float = 1.0):
     """A 3-D view: the tread surface and the sidewalls as a surface of revolution, loaded if given.
 
-    ``displacement``: (n_theta, n_nodes, 3) from :func:`.tire.section_static.loaded_displacement`
+    ``displacement``: (n_theta, n_nodes, 3) from :func:`roadnoise_utils.tire.cross_section.static.loaded_displacement`
     at ``np.linspace(-pi, pi, n_theta)``, drawn ``scale`` times.
     """
     mesh = tire.mesh

@@ -9,10 +9,10 @@ from matplotlib import patheffects
 from matplotlib.collections import LineCollection
 from matplotlib.patches import Circle, Rectangle
 
-from ..response.modes import LoadedModes
 from ..tire.model import FRFResult
-from ..tire.ring_model import UX, UZ, FETModel
-from ..tire.static import StaticState
+from ..tire.ring.mechanics import UX, UZ, FETModel
+from ..tire.ring.modes import LoadedModes
+from ..tire.ring.static import StaticState
 from .common import MM, paper_lines
 
 

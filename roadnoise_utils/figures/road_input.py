@@ -5,7 +5,7 @@ from __future__ import annotations
 import matplotlib.pyplot as plt
 import numpy as np
 
-from ..tire.static import StaticState
+from ..tire.model import Footprint
 from .common import MM
 
 
@@ -55,7 +55,7 @@ def plot_tracks(profile, length: float, ax: plt.Axes | None = None) -> plt.Axes:
     return ax
 
 
-def plot_row_inputs(roads: dict, static: StaticState, row: int = 0, samples: int = 1000) -> plt.Figure:
+def plot_row_inputs(roads: dict, static: Footprint, row: int = 0, samples: int = 1000) -> plt.Figure:
     """Displacement histories of every tassello of one row, one panel per road (``title -> RoadInput``).
 
     On a 2D road every column of the row sees the same track (the curves differ only by the

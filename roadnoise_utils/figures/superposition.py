@@ -6,8 +6,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.patches import Rectangle
 
-from ..tire.model import FRFResult
-from ..tire.static import StaticState
+from ..tire.model import Footprint, FRFResult
 from .common import MM, paper_lines
 
 
@@ -100,9 +99,7 @@ def plot_identification(visco: FRFResult, ident, f_max: float = 300.0) -> plt.Fi
     return fig
 
 
-def plot_tassello_frf(
-    static: StaticState, frfs: dict[str, FRFResult], tassello: int, f_max: float = 300.0
-) -> plt.Figure:
+def plot_tassello_frf(static: Footprint, frfs: dict[str, FRFResult], tassello: int, f_max: float = 300.0) -> plt.Figure:
     """|H_i| and phase of one tassello (number from 1) from several models, with its position."""
     i = tassello - 1
     fig = plt.figure(figsize=(11, 4.2))

@@ -14,6 +14,11 @@ cached stage function (:mod:`.stages`), which computes the stage or loads it fro
   write is removed the next time that key is computed (or after an hour, by any process).
 * **One computation per key**: a per-key file lock (POSIX ``flock``, in ``.locks/``) makes a second process
   wait for the first and then read its result instead of computing the stage again.
+* **Data files by their contents**: every data file the computation reads (through
+  :func:`~roadnoise_utils.repro.paths.read_toml` and the other readers) is recorded with the
+  SHA-256 of its contents in the entry; an entry whose files changed since is stale and
+  recomputed. So a stage keyed by a file's *name* (a sweep over road textures or vehicles)
+  still follows the file's contents, by construction.
 * **Never trusted blindly**: each file carries a SHA-256 of its payload; a truncated,
   corrupted or unreadable file is discarded with a warning and the stage recomputed.
 * **Never in the way**: a cache folder that cannot be written (read-only, a full disk, a path
@@ -51,10 +56,10 @@ import control
 import numpy as np
 import scipy
 
-from .paths import cache_dir
+from .paths import cache_dir, changed_files, recording_reads, replay_reads
 
 T = TypeVar("T")
-_MAGIC = b"roadnoise-cache-v2\n"
+_MAGIC = b"roadnoise-cache-v3\n"
 #: The package folder whose modules the code fingerprints cover.
 PACKAGE_DIR = Path(__file__).resolve().parents[1]
 PACKAGE = PACKAGE_DIR.name
@@ -70,7 +75,7 @@ STAGE_MODULES: dict[str, tuple[str, ...]] = {}
 
 
 def _module_file(name: str, package_dir: Path) -> Path | None:
-    """File of a dotted module name of the package (``roadnoise_utils.tire.static``), or None."""
+    """File of a dotted module name of the package (``roadnoise_utils.tire.ring.static``), or None."""
     parts = name.split(".")
     if parts[0] != PACKAGE:
         return None
@@ -189,7 +194,10 @@ def _read(path: Path) -> Any:
     digest, payload = data[len(_MAGIC) : len(_MAGIC) + 64], data[len(_MAGIC) + 64 :]
     if hashlib.sha256(payload).hexdigest().encode() != digest:
         raise ValueError("checksum mismatch")
-    return pickle.loads(payload)
+    entry = pickle.loads(payload)
+    if not (isinstance(entry, tuple) and len(entry) == 2 and isinstance(entry[1], dict)):
+        raise ValueError("not a (result, data files read) entry")
+    return entry
 
 
 def _try_read(path: Path) -> tuple[bool, Any]:
@@ -320,7 +328,7 @@ def cached(
         pipeline, e.g. ``"solve_static"``: :data:`STATS` and the files carry the stage's name).
     inputs : dict
         Every resolved argument the result depends on (numbers, arrays, dataclasses such as
-        :class:`~roadnoise_utils.tire.spec.TireSpec`).
+        :class:`~roadnoise_utils.tire.ring.spec.TireSpec`).
     compute : callable
         Computes the result when it is not cached.
     runs : iterable of functions or modules
@@ -333,24 +341,44 @@ def cached(
         return _timed(name, compute)
     key = cache_key(name, inputs, stage_fingerprint(stage, runs, name))
     folder = _usable_folder()
-    if folder is not None:
-        path = folder / f"{name}-{key}.pkl"
-        found, value = _try_read(path)
+    if folder is None:
+        STATS[name, "computed"] += 1
+        return compute()
+    path = folder / f"{name}-{key}.pkl"
+    found, value = _current(path, name)
+    if found:
+        return value
+    with _key_lock(path) as locked:
+        found, value = _current(path, name)  # another process may have written it while we waited
         if found:
-            STATS[name, "hit"] += 1
             return value
-        with _key_lock(path) as locked:
-            found, value = _try_read(path)  # another process may have written it while we waited
-            if found:
-                STATS[name, "hit"] += 1
-                return value
-            _remove_orphans(path, locked)
+        _remove_orphans(path, locked)
+        with recording_reads() as reads:
             value = _timed(name, compute)
-            STATS[name, "computed"] += 1
-            try:
-                _write(path, value)
-            except OSError as exc:
-                warnings.warn(f"stage cache not written ({exc}); returning the computed {name}", stacklevel=2)
-            return value
-    STATS[name, "computed"] += 1
-    return compute()
+        STATS[name, "computed"] += 1
+        try:
+            _write(path, (value, reads))
+        except OSError as exc:
+            warnings.warn(f"stage cache not written ({exc}); returning the computed {name}", stacklevel=2)
+        return value
+
+
+def _current(path: Path, name: str) -> tuple[bool, Any]:
+    """``(True, value)`` from a sound cache file whose data files are unchanged since it was computed.
+
+    An entry records the contents (digests) of every data file its computation read
+    (:func:`~roadnoise_utils.repro.paths.record_read`): a road texture, a vehicle, a tire
+    file edited since is a stale entry, recomputed; a current entry's reads pass on to the
+    stage around it, so an outer stage's entry records them too.
+    """
+    found, entry = _try_read(path)
+    if not found:
+        return False, None
+    value, reads = entry
+    changed = changed_files(reads)
+    if changed:
+        STATS[name, "stale"] += 1
+        return False, None
+    replay_reads(reads)
+    STATS[name, "hit"] += 1
+    return True, value

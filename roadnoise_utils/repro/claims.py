@@ -23,6 +23,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from ..tire.model import NotApplicable
 from .evaluators import EVALUATORS, MODELS
 from .evaluators import transmissibility_bands as transmissibility_bands  # Fig. 10's bands, re-exported
 from .paths import data_dir, read_toml
@@ -98,18 +99,14 @@ def _format(value: float) -> str:
     return f"{value:.2e}"
 
 
-def _suffix(model: str) -> str:
-    return "" if model == "ring" else "_" + model.replace("-", "_")
-
-
 def deviation(claim: dict, model: str) -> str:
-    """The claim's documented deviation for ``model`` ("" if none)."""
-    return claim.get("known_deviation" + _suffix(model), "")
+    """The claim's documented deviation for the tire model ``model`` ("" if none)."""
+    return claim.get("known_deviation", {}).get(model, "")
 
 
 def not_applicable(claim: dict, model: str) -> str:
-    """Why the claim does not apply to ``model`` ("" if it does)."""
-    return claim.get("not_applicable" + _suffix(model), "")
+    """Why the claim does not apply to the tire model ``model`` ("" if it does)."""
+    return claim.get("not_applicable", {}).get(model, "")
 
 
 def report(
@@ -152,7 +149,10 @@ def _evaluate(claim: dict, evaluator: Callable[[str], float], model: str) -> dic
     reason = not_applicable(claim, model)
     if reason:
         return {f"ours ({model})": "", f"verdict ({model})": "n/a", f"deviation ({model})": reason}
-    ours = float(evaluator(model))
+    try:
+        ours = float(evaluator(model))
+    except NotApplicable as lacking:
+        return {f"ours ({model})": "", f"verdict ({model})": "n/a", f"deviation ({model})": str(lacking)}
     passed = judge(claim, ours)
     return {
         f"ours ({model})": _format(ours),

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from .paths import data_dir, figure_dir, read_toml
+from .paths import data_dir, figure_dir, read_toml, record_read
 
 
 def notebooks() -> list[dict[str, str]]:
@@ -56,6 +56,7 @@ def gallery_markdown(index_csv: Path | None = None, prefix: str = "figures/", co
     ``<!-- gallery -->`` markers (a test keeps the two identical).
     """
     index_csv = index_csv or figure_dir() / "index.csv"
+    record_read(index_csv)
     with open(index_csv, newline="") as fh:
         rows = [r for r in csv.DictReader(fh) if r["paper_figure"]]
     first: dict[int, dict[str, str]] = {}

@@ -1,6 +1,6 @@
 """Our number for each of the paper's claims, on either tire model (:mod:`.claims` judges them).
 
-Each evaluator takes the tire model (``"ring"`` or ``"cross-section"``) and runs the paper's
+Each evaluator takes the tire model (a kind of ``data/paper/report.toml``) and runs the paper's
 experiment on that model's tire files (:data:`TIRES`): the 165/65 R14 of the cleat test and
 the FE-model claims, the 195/65 R15 of the moving-hub check and the quarter car. Whatever a
 notebook's parameters, the claims are always evaluated on these. Shared inputs are computed
@@ -38,14 +38,13 @@ from ..vehicle.spectra import band_rms, power_share
 from . import stages
 from .paths import data_dir, read_toml
 
-#: The tire models, in the report's column order.
-MODELS = ("ring", "cross-section")
-#: Each model's tire files: ``paper`` (165/65 R14: the cleat test, the FE-model claims) and
-#: ``check`` (195/65 R15: the moving-hub check and the quarter car of Fig. 10-14).
+#: The report's tire models and their tire files by role, from ``data/paper/report.toml``.
 TIRES = {
-    "ring": {"paper": "165_65R14", "check": "195_65R15"},
-    "cross-section": {"paper": "165_65R14_cross_section", "check": "195_65R15_cross_section"},
+    m["kind"]: {role: m[role] for role in ("paper", "check")}
+    for m in read_toml(data_dir() / "paper" / "report.toml")["model"]
 }
+#: The tire models, in the report's column order.
+MODELS = tuple(TIRES)
 
 
 def tire_of(model: str, role: str = "paper") -> str:
@@ -53,6 +52,17 @@ def tire_of(model: str, role: str = "paper") -> str:
     if model not in TIRES:
         raise ValueError(f"model = {model!r}: valid values are {list(TIRES)}")
     return TIRES[model][role]
+
+
+def role_of(tire: str) -> str:
+    """The role (``"paper"`` or ``"check"``) of a report tire file, in whichever model lists it."""
+    for files in TIRES.values():
+        for role, name in files.items():
+            if name == tire:
+                return role
+    raise ValueError(
+        f"tire = {tire!r} is none of the report's tire files {[f for m in TIRES.values() for f in m.values()]}"
+    )
 
 
 # ---------------------------------------------------------------- shared inputs, each computed once per model
@@ -194,9 +204,8 @@ def _cavity_split(model: str):
 
 
 def _cavity_tire(model: str) -> str:
-    """The cavity test's tire (``[cavity] tire`` of whole_car.toml, the ring's) in ``model``."""
-    ring = cavity_conditions().tire
-    return tire_of(model, next(role for role, t in TIRES["ring"].items() if t == ring))
+    """The cavity test's tire (``[cavity] tire`` of whole_car.toml) in the role it has, on ``model``."""
+    return tire_of(model, role_of(cavity_conditions().tire))
 
 
 def _rated_load(model: str) -> float:

@@ -7,6 +7,8 @@ editable install in the repository (the normal case) and from anywhere else.
 from __future__ import annotations
 
 import contextlib
+import contextvars
+import hashlib
 import os
 import tempfile
 import tomllib
@@ -83,8 +85,64 @@ def atomic_output(path: str | Path, overwrite: bool = False, parameter: str = "p
 
 def read_toml(path: Path) -> dict:
     """A TOML file as nested dicts; a file that is not valid TOML is refused with its name and the reason."""
+    record_read(path)
     with open(path, "rb") as fh:
         try:
             return tomllib.load(fh)
         except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
             raise ValueError(f"{Path(path).name}: not a valid TOML file ({exc})") from None
+
+
+# ---------------------------------------------------------------- the data files a computation reads
+
+#: The open records of :func:`recording_reads`, innermost last (per thread and task).
+_RECORDS: contextvars.ContextVar[tuple[dict[str, str], ...]] = contextvars.ContextVar("roadnoise_reads", default=())
+_DIGESTS: dict[tuple[str, int, int], str] = {}
+
+
+def file_digest(path: str | Path) -> str:
+    """SHA-256 of a file's bytes ("" for a missing file), memoised on its modification time and size."""
+    try:
+        stat = os.stat(path)
+    except OSError:
+        return ""
+    memo = (str(path), stat.st_mtime_ns, stat.st_size)
+    if memo not in _DIGESTS:
+        _DIGESTS[memo] = hashlib.sha256(Path(path).read_bytes()).hexdigest()
+    return _DIGESTS[memo]
+
+
+def record_read(path: str | Path) -> None:
+    """Note that the running computation read ``path``: every reader of a data file calls this.
+
+    Each open :func:`recording_reads` (a cached stage and the stages around it) gets the file's
+    resolved path and the digest of its contents.
+    """
+    records = _RECORDS.get()
+    if records:
+        resolved = str(Path(path).resolve())
+        digest = file_digest(resolved)
+        for record in records:
+            record[resolved] = digest
+
+
+@contextlib.contextmanager
+def recording_reads() -> Iterator[dict[str, str]]:
+    """Collect ``{path: digest}`` of every file :func:`record_read` sees inside the block."""
+    record: dict[str, str] = {}
+    token = _RECORDS.set((*_RECORDS.get(), record))
+    try:
+        yield record
+    finally:
+        _RECORDS.reset(token)
+
+
+def replay_reads(reads: dict[str, str]) -> None:
+    """Pass the reads of a result served from the cache on to the open records around it."""
+    for record in _RECORDS.get():
+        record.update(reads)
+
+
+def changed_files(reads: dict[str, str]) -> list[str]:
+    """The files of ``reads`` whose contents differ from (or are missing since) when they were read."""
+    return [path for path, digest in reads.items() if file_digest(path) != digest]

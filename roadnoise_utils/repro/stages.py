@@ -29,20 +29,19 @@ stage whose capability the tire model lacks raises
 
 from __future__ import annotations
 
+from typing import Any
+
 import control
 import numpy as np
 
 from ..response.modal_reduction import ModalReduction
-from ..response.modes import LoadedModes
-from ..response.one_sided import ContactRun
 from ..rm import moving_hub, order, realisation
 from ..rm.fitting import FitSet
 from ..road import input as road_input
 from ..road.input import BAND, RoadInput
 from ..road.textures import RoadProfile, RoadSpectrum
-from ..tire import ring_model
+from ..tire.contact import ContactRun
 from ..tire.model import Footprint, FRFResult, TireModel, tire_model
-from ..tire.ring_model import FETModel
 from .cache import cached
 from .inputs import DEFAULT_FREQS, FIT_TOLERANCE
 
@@ -52,11 +51,6 @@ Tire = str | TireModel | object
 def load_tire(tire: Tire):
     """The validated tire file of a tire name, path, model or spec (its ``[tire] model`` chooses the class)."""
     return tire_model(tire).spec
-
-
-def build_fet(tire: Tire) -> FETModel:
-    """The assembled ring FE tire (fast; not cached)."""
-    return ring_model.build_fet(load_tire(tire))
 
 
 def rim_side_mass(tire: Tire) -> float:
@@ -106,8 +100,8 @@ def loaded_modes(
     reference_frequency: float = 70.0,
     load: float | None = None,
     drum_radius: float | None = None,
-) -> LoadedModes:
-    """The loaded tire's modes (cached; capability ``loaded_modes``)."""
+) -> Any:
+    """The loaded tire's modes (cached; capability ``loaded_modes``): the model's :meth:`loaded_modes`."""
     model = tire_model(tire)
     model.require("loaded_modes")
     return model.loaded_modes(model.case(road, load, drum_radius), n_modes, reference_frequency)
@@ -274,7 +268,6 @@ __all__ = [
     "DEFAULT_FREQS",
     "FIT_TOLERANCE",
     "assemble_fixed_hub",
-    "build_fet",
     "fe_cleat_response",
     "fit_hub",
     "fit_tasselli",

@@ -1,9 +1,8 @@
 """The FRF sets in the universal file format (UFF 58), the format NVH tools exchange FRFs in.
 
-:func:`write_uff58` writes every FRF of a loaded tire — the ring tire's :class:`.frf.FRFResult` or
-the cross-section tire's :class:`.section_footprint.FootprintFRF` — as UFF data sets 58 (function
+:func:`write_uff58` writes every FRF of a loaded tire of any model (a :class:`roadnoise_utils.tire.model.FRFResult`) as UFF data sets 58 (function
 at nodal DOF) through `pyuff <https://github.com/ladisk/pyuff>`_, after a units data set 164 (SI);
-:func:`read_uff58` reads such a file back into an :class:`.frf.FRFResult`. Every set is a
+:func:`read_uff58` reads such a file back into an :class:`roadnoise_utils.tire.model.FRFResult`. Every set is a
 frequency response function (function type 4) of the vertical hub force (response node
 :data:`HUB_NODE`, direction +Z) per unit vertical displacement (reference direction +Z) of
 
@@ -45,9 +44,8 @@ import numpy as np
 import pyuff
 
 from .. import guards
-from ..repro.paths import atomic_output
+from ..repro.paths import atomic_output, record_read
 from ..tire.model import FRFResult
-from .section_footprint import FootprintFRF
 
 #: Response node of every set: the hub (wheel centre); also the reference node of ``G_H``.
 HUB_NODE = 1
@@ -75,7 +73,7 @@ _DATA_TYPES = {8: "displacement", 9: "reaction force", 11: "velocity", 12: "acce
 
 def write_uff58(
     path: str | Path,
-    frfs: FRFResult | FootprintFRF,
+    frfs: FRFResult,
     *,
     binary: bool = False,
     overwrite: bool = False,
@@ -88,11 +86,9 @@ def write_uff58(
     ----------
     path : str or Path
         The file to write (``.uff`` or ``.unv`` by custom); its folder must exist.
-    frfs : FRFResult or FootprintFRF
-        The ring tire's FRFs (:func:`.frf.frf_visco`, :class:`.modal_reduction.ModalReduction`'s
-        ``FRFResult``) or the cross-section tire's footprint FRFs (written through
-        :meth:`.section_footprint.FootprintFRF.to_frf_result`: ``H`` per tassello of its
-        ``static.tasselli``). All in N/m.
+    frfs : FRFResult
+        Any tire model's FRFs (:meth:`roadnoise_utils.tire.model.TireModel.fixed_hub_frfs`, a
+        :class:`.modal_reduction.ModalReduction`'s ``FRFResult``), in N/m.
     binary : bool
         Binary UFF 58 (float64, exact) instead of ASCII (12 significant digits); default ASCII.
     overwrite : bool
@@ -111,17 +107,16 @@ def write_uff58(
     Raises
     ------
     TypeError
-        ``frfs`` is neither an ``FRFResult`` nor a ``FootprintFRF``.
+        ``frfs`` is not an ``FRFResult``.
     ValueError
         Frequencies not increasing, fewer than 2, negative or non-finite; arrays whose lengths do
         not match ``freqs``; a non-finite FRF (naming the array and the tassello or point).
     FileExistsError
         ``path`` exists and ``overwrite`` is false.
     """
-    result = frfs.to_frf_result() if isinstance(frfs, FootprintFRF) else frfs
-    if not isinstance(result, FRFResult):
-        raise TypeError(f"frfs must be an FRFResult or a FootprintFRF, got {type(frfs).__name__}")
-    freqs, rows = _checked_rows(result, points)
+    if not isinstance(frfs, FRFResult):
+        raise TypeError(f"frfs must be an FRFResult (TireModel.fixed_hub_frfs), got {type(frfs).__name__}")
+    freqs, rows = _checked_rows(frfs, points)
     spacing, stored = _abscissa(freqs, binary)
     if not binary and spacing == 0:
         change = float(np.max(np.abs(stored - freqs)))
@@ -135,7 +130,7 @@ def write_uff58(
         "binary": int(bool(binary)),
         "id2": _id_line(label),
         "id3": when,
-        "id4": _id_line(result.method),
+        "id4": _id_line(frfs.method),
         "id5": "roadnoise: RM model of Belluzzo et al. 2002, fixed hub, SI",
         "func_type": FRF_FUNCTION,
         "rsp_ent_name": "HUB",
@@ -219,6 +214,7 @@ def read_uff58(path: str | Path) -> FRFResult:
     if not path.is_file():
         raise FileNotFoundError(f"path = {str(path)!r} does not exist or is not a file")
     try:
+        record_read(path)
         found = pyuff.UFF(str(path)).read_sets()
     except Exception as exc:  # pyuff raises bare Exceptions
         raise ValueError(f"{path.name}: not a readable UFF file ({exc})") from None

@@ -8,7 +8,7 @@ excitation from the road" (Eq. 5, Fig. 7): :math:`F_M = F_F + F_H`, with
 inputs :math:`[u_F; u_H]` (Eq. 7).
 
 Its check, the FE model itself with the hub free, is
-:func:`roadnoise_utils.response.fe_reference.fe_moving_hub`.
+:func:`roadnoise_utils.tire.ring.fe_reference.fe_moving_hub`.
 """
 
 from __future__ import annotations
@@ -53,7 +53,7 @@ def rm_moving_hub(
     damping: float,
     tire_hub_mass: float,
 ) -> tuple[np.ndarray, np.ndarray]:
-    """The same as :func:`roadnoise_utils.response.fe_reference.fe_moving_hub` from the fitted RM model (Eq. 5-7).
+    """The same as :func:`roadnoise_utils.tire.ring.fe_reference.fe_moving_hub` from the fitted RM model (Eq. 5-7).
 
     ``hub_mass``, ``stiffness`` and ``damping`` mean what they mean there; ``tire_hub_mass``
     (kg) is the FE tire's rim-side mass (:attr:`.FETModel.hub_vertical_mass`), which

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..tire.static import StaticState
+from ..tire.model import Footprint
 from .input import RoadInput, profile_input
 
 
@@ -37,7 +37,7 @@ def cleat_profile(height: float, base: float, shape: str = "triangle"):
 
 
 def cleat_input(
-    static: StaticState,
+    static: Footprint,
     speed: float,
     height: float,
     base: float,
@@ -49,7 +49,7 @@ def cleat_input(
 
     Parameters
     ----------
-    static : StaticState
+    static : Footprint
         The tire loaded on the drum.
     speed : float
         Rolling speed (m/s), > 0.

@@ -33,7 +33,7 @@ import numpy as np
 import pycrg
 
 from .. import guards
-from ..repro.paths import atomic_output
+from ..repro.paths import atomic_output, record_read
 from .files import check_road_grid
 from .textures import MAX_LATERAL, RoadProfile
 
@@ -97,6 +97,7 @@ def load_crg(path: str | Path, *, modifiers: str = "file", track: float = 0.0, h
     has_block = _header(path).modifiers is not None
     apply = modifiers == "opencrg" or (modifiers == "file" and has_block)
     try:
+        record_read(path)
         with pycrg.DataSet.open(path, apply_modifiers=apply) as dataset:
             grid = dataset.grid()
     except (pycrg.OpenCRGError, ValueError) as exc:

@@ -6,6 +6,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..repro.paths import record_read
 from .textures import MAX_HEIGHT, MIN_WAVELENGTH, RoadProfile, check_lateral_positions
 
 
@@ -21,6 +22,7 @@ def load_road_file(path: str | Path) -> RoadProfile:
     if not path.is_file():
         raise FileNotFoundError(f"road file {str(path)!r} does not exist or is not a file")
     try:
+        record_read(path)
         with open(path, encoding="utf-8-sig") as fh:  # tolerates the byte-order mark spreadsheets write
             lines = [line for line in fh if line.strip() and not line.startswith("#")]
     except UnicodeDecodeError:

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..tire.static import StaticState
+from ..tire.model import Footprint
 from ..tire.tasselli import Tasselli
 
 
@@ -57,7 +57,7 @@ def strip_kernels(tasselli: Tasselli, step: float) -> tuple[list[tuple[int, np.n
     return parts, float(x[0])
 
 
-def kernel_transforms(static: StaticState, wavenumbers: np.ndarray, step: float = 2.0e-4) -> np.ndarray:
+def kernel_transforms(static: Footprint, wavenumbers: np.ndarray, step: float = 2.0e-4) -> np.ndarray:
     """:math:`K_i(n) = \\int k_i(x) e^{i 2\\pi n x} dx` for every tassello (rows) and wavenumber (cycles/m)."""
     kernels, x0 = tassello_kernels(static.tasselli, step)
     x = x0 + step * np.arange(kernels.shape[1])
@@ -75,7 +75,7 @@ def _phi(z: np.ndarray) -> np.ndarray:
     return np.where(small, series, closed)
 
 
-def point_transforms(static: StaticState, wavenumbers: np.ndarray) -> np.ndarray:
+def point_transforms(static: Footprint, wavenumbers: np.ndarray) -> np.ndarray:
     """Transforms of each contact point's normalised hat kernel, (n_points, n_wavenumbers).
 
     A hat rising over ``a`` to 1 at ``x`` and falling over ``b`` has
@@ -88,7 +88,7 @@ def point_transforms(static: StaticState, wavenumbers: np.ndarray) -> np.ndarray
     return np.exp(1j * k * x) * (a * _phi(-1j * k * a) + b * _phi(1j * k * b)) * 2 / (a + b)
 
 
-def tassellation_error(static: StaticState, point_frf: np.ndarray, wavelengths: np.ndarray) -> np.ndarray:
+def tassellation_error(static: Footprint, point_frf: np.ndarray, wavelengths: np.ndarray) -> np.ndarray:
     """Error of the hub force from tasselli against contact-point resolution, per wavelength.
 
     Relative to the force a long wave of the same amplitude would give, :math:`|\\sum_n H_n|`

@@ -1,7 +1,7 @@
 """The primal active set of frictionless vertical contact with a rising rigid road, shared by both tire models.
 
-The ring model (:mod:`.static`) condenses its stiffness onto the tread points and adds the tread
-springs in series; the cross-section model (:mod:`.section_static`) gives the compliance of its
+The ring model (:mod:`roadnoise_utils.tire.ring.static`) condenses its stiffness onto the tread points and adds the tread
+springs in series; the cross-section model (:mod:`roadnoise_utils.tire.cross_section.static`) gives the compliance of its
 contact grid from the harmonic sum. Both then solve the same problem: contact forces
 ``lambda >= 0`` and the road's rise ``delta`` with
 

@@ -31,7 +31,7 @@ import numpy as np
 import pandas as pd
 
 from .. import guards
-from ..repro.paths import atomic_output
+from ..repro.paths import atomic_output, record_read
 from .tasselli import MAX_TASSELLO_SIZE, Tasselli, tasselli_from_nodes
 
 #: The columns of a footprint file, in order.
@@ -101,6 +101,7 @@ def read_footprint_csv(path: str | Path) -> tuple[Tasselli, np.ndarray]:
     if not path.is_file():
         raise FileNotFoundError(f"footprint file {str(path)!r} does not exist or is not a file")
     try:
+        record_read(path)
         table = pd.read_csv(path)
     except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as exc:
         raise ValueError(f"{path.name}: not a readable CSV file ({exc})") from None

@@ -47,6 +47,9 @@ if TYPE_CHECKING:
 
 #: Default frequency grid of the direct sweeps: 0-400 Hz every 1 Hz (paper: up to 250 Hz,
 #: "easily improved to 400 Hz").
+#: A tire model's validated tire file (each model's own frozen dataclass, :attr:`TireModel.spec`):
+#: what a stage's cache key and a result's ``tire`` field hold, whatever the model.
+ModelSpec = Any
 DEFAULT_FREQS = np.arange(0.0, 400.0 + 0.5, 1.0)
 
 #: Optional capabilities a tire model may have, with what each gives.
@@ -237,7 +240,7 @@ class ContactSetup:
 class TireModel(ABC):
     """One implementation of the tire for the RM pipeline (a tire file's ``[tire] model``).
 
-    A model is an immutable wrapper of its validated tire file (:attr:`spec`); its methods
+    A model is an immutable wrapper of its validated tire file (:attr:`roadnoise_utils.tire.ring.spec`); its methods
     compute (and cache, where costly) what the pipeline asks for. Subclasses set :attr:`kind`
     and :attr:`capabilities`, implement :meth:`parse`, :meth:`load`, :meth:`fixed_hub_frfs`
     and :meth:`rim_side_mass`, and override the optional methods of the capabilities they have.

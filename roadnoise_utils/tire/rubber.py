@@ -167,8 +167,8 @@ CHUNK = 32768
 class PronyBranches:
     """The Prony branches of one compound or layer in a time step ``dt`` (s): weights, times and step constants.
 
-    Shared by the time-stepped runs of both tire models (:mod:`roadnoise_utils.response.one_sided`,
-    :mod:`.section_stepping`); zero-weight terms are dropped.
+    Shared by the time-stepped runs of both tire models (:mod:`roadnoise_utils.tire.contact`,
+    :mod:`roadnoise_utils.tire.cross_section.stepping`); zero-weight terms are dropped.
     """
 
     def __init__(self, series: PronySeries, dt: float):

@@ -26,7 +26,7 @@ from ..rm.simulation import ModalSections, response, simulate
 from ..road.input import RoadInput
 from ..road.kernels import kernel_transforms
 from ..road.textures import RoadSpectrum
-from ..tire.static import StaticState
+from ..tire.model import Footprint
 from .quarter_car import QuarterCar, couple, vehicle_statespace, with_extra_hub_mass
 from .spectra import psd
 
@@ -85,7 +85,7 @@ def spectra(
 def predicted_psd(
     freqs: np.ndarray,
     tassello_frf: np.ndarray,
-    static: StaticState,
+    static: Footprint,
     spectrum: RoadSpectrum,
     speed: float,
     corner: control.StateSpace | None = None,

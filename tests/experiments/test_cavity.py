@@ -8,7 +8,7 @@ import pytest
 from roadnoise_utils.experiments import cavity
 from roadnoise_utils.repro import stages
 from roadnoise_utils.tire.model import NotApplicable
-from roadnoise_utils.tire.spec import from_dict, to_dict
+from roadnoise_utils.tire.ring.spec import from_dict, to_dict
 
 TIRE = "195_65R15"
 

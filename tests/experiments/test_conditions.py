@@ -44,4 +44,4 @@ def test_paper_defaults_of_the_top_level_entry_points(fet, drum):
     explicit = ru.road.cleat.cleat_input(drum, 5.0, paper.height, paper.base, paper.shape)
     assert (ru.cleat_input(drum, 5.0).u == explicit.u).all()
     with pytest.raises(ValueError, match="drum_radius is required"):
-        ru.tire.solve_static(fet, road="drum")
+        ru.tire.ring.static.solve_static(fet, road="drum")

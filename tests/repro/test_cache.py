@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import ast
 import concurrent.futures
 import dataclasses
 import multiprocessing
@@ -14,7 +15,7 @@ import pytest
 
 import roadnoise_utils as ru
 from roadnoise_utils.repro import cache
-from roadnoise_utils.tire.spec import SECTIONS, Compound
+from roadnoise_utils.tire.ring.spec import SECTIONS, Compound
 
 
 @pytest.fixture
@@ -174,8 +175,8 @@ def test_two_processes_compute_a_stage_once(tmp_path):
 
 
 def test_module_closure_follows_imports_but_not_figures():
-    closure = cache.module_closure(["roadnoise_utils.tire.static"])
-    assert "roadnoise_utils.tire.ring_model" in closure and "roadnoise_utils.tire.tasselli" in closure
+    closure = cache.module_closure(["roadnoise_utils.tire.ring.static"])
+    assert "roadnoise_utils.tire.ring.mechanics" in closure and "roadnoise_utils.tire.tasselli" in closure
     assert "roadnoise_utils.repro.paths" in closure  # through the tire spec reader
     assert not [m for m in closure if ".figures" in m or ".experiments" in m or ".response" in m]
 
@@ -199,7 +200,7 @@ def test_fingerprints_follow_the_code_each_stage_runs(tmp_path, tire):
     (copy / "repro" / "claims.py").write_text((copy / "repro" / "claims.py").read_text() + "\n# edited\n")
     cache.code_fingerprint.cache_clear()
     assert fingerprints() == before
-    solver = copy / "tire" / "static.py"
+    solver = copy / "tire" / "ring" / "static.py"
     solver.write_text(solver.read_text() + "\n# edited\n")
     cache.code_fingerprint.cache_clear()
     after = fingerprints()
@@ -227,3 +228,80 @@ def test_cache_files_are_readable_by_the_group(cache_dir):
     cache.cached("demo", {"x": 10.0}, lambda: 1)
     (entry,) = cache_dir.glob("demo-*.pkl")
     assert entry.stat().st_mode & 0o044 == 0o044 & ~cache._umask()
+
+
+def test_an_edited_data_file_makes_every_entry_that_read_it_stale(cache_dir, tmp_path):
+    texture = tmp_path / "texture.toml"
+    texture.write_text("height = 1.0\n")
+    calls = []
+
+    def inner():
+        calls.append("inner")
+        return ru.repro.paths.read_toml(texture)["height"]
+
+    def outer():
+        calls.append("outer")
+        return 10.0 * cache.cached("inner", {"name": "texture"}, inner)  # keyed by the name only
+
+    assert cache.cached("outer", {"name": "texture"}, outer) == 10.0
+    assert cache.cached("outer", {"name": "texture"}, outer) == 10.0 and calls == ["outer", "inner"]
+    # the outer entry recomputed over the inner one served from the cache still records the file
+    for path in cache_dir.glob("outer-*.pkl"):
+        path.unlink()
+    assert cache.cached("outer", {"name": "texture"}, outer) == 10.0 and calls == ["outer", "inner", "outer"]
+    texture.write_text("height = 4.5\n")  # the same name, new contents
+    assert cache.cached("outer", {"name": "texture"}, outer) == 45.0
+    assert calls == ["outer", "inner", "outer", "outer", "inner"]
+    assert cache.STATS["outer", "stale"] >= 1 and cache.STATS["inner", "stale"] >= 1
+    texture.unlink()  # a file gone since is a change too
+    with pytest.raises(FileNotFoundError):
+        cache.cached("outer", {"name": "texture"}, outer)
+
+
+def _file_reads(function: ast.FunctionDef) -> list[str]:
+    """The calls in ``function`` that read a file: ``open`` for reading, pandas, numpy, pyuff, pycrg, tomllib."""
+    found = []
+    for node in ast.walk(function):
+        if not isinstance(node, ast.Call):
+            continue
+        name = node.func.attr if isinstance(node.func, ast.Attribute) else getattr(node.func, "id", "")
+        if name == "open":
+            mode = (
+                node.args[1] if len(node.args) > 1 else next((k.value for k in node.keywords if k.arg == "mode"), None)
+            )
+            text = mode.value if isinstance(mode, ast.Constant) else "r"
+            if isinstance(node.func, ast.Name) and not any(c in text for c in "wax"):
+                found.append("open")
+            elif isinstance(node.func, ast.Attribute) and ast.unparse(node.func.value).endswith("DataSet"):
+                found.append("DataSet.open")
+        elif (
+            name in ("read_csv", "loadtxt", "read_sets", "load")
+            and ast.unparse(node.func).split(".")[0]
+            in (
+                "pd",
+                "np",
+                "tomllib",
+                "pyuff",
+            )
+            or name == "read_sets"
+        ):
+            found.append(name)
+    return found
+
+
+def test_every_reader_of_data_files_records_what_it_reads():
+    """So that a cached stage's entry follows the contents of every data file, by construction."""
+    readers = 0
+    for path in sorted(cache.PACKAGE_DIR.rglob("*.py")):
+        if path.name == "cache.py":  # the cache's own files are its payload, not data
+            continue
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, ast.FunctionDef) and _file_reads(node):
+                readers += 1
+                calls = {
+                    getattr(c.func, "id", getattr(c.func, "attr", ""))
+                    for c in ast.walk(node)
+                    if isinstance(c, ast.Call)
+                }
+                assert "record_read" in calls, f"{path.name}:{node.name} reads a file ({_file_reads(node)}) unrecorded"
+    assert readers >= 5  # read_toml, the road CSV, OpenCRG, UFF 58 and the footprint CSV at least

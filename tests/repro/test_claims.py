@@ -16,7 +16,7 @@ SMALL = [
         "paper": 5.0,
         "rel": 0.1,
         "notebook": "y.ipynb",
-        "known_deviation": "explained",
+        "known_deviation": {"ring": "explained"},
     },
 ]
 
@@ -45,8 +45,8 @@ def test_the_report_gives_round_off_as_the_bound_it_meets():
 def test_each_tire_model_gets_its_column_deviations_and_exemptions():
     """A claim judged per model: the cross-section column has its own deviation and n/a reasons."""
     two = [
-        {**SMALL[0], "known_deviation_cross_section": "why the cross-section tire differs"},
-        {**SMALL[1], "not_applicable_cross_section": "no such thing on this model"},
+        {**SMALL[0], "known_deviation": {"cross-section": "why the cross-section tire differs"}},
+        {**SMALL[1], "not_applicable": {"cross-section": "no such thing on this model"}},
     ]
     values = {"ring": 10.0, "cross-section": 20.0}
     evaluated = []

@@ -12,7 +12,7 @@ import pytest
 import roadnoise_utils as ru
 from roadnoise_utils.repro import cache, stages
 from roadnoise_utils.repro.paths import data_dir
-from roadnoise_utils.tire.section_static import SectionStaticState
+from roadnoise_utils.tire.cross_section.static import SectionStaticState
 
 
 @pytest.fixture

@@ -113,7 +113,7 @@ def test_the_mode_shapes_sign_does_not_depend_on_round_off(fet, flat):
     """Each shape's sign is fixed by a generic projection, not by its largest entry (which, on a mirror-symmetric
     tire, ties between mirrored nodes and is chosen by round-off): a flipped or slightly perturbed shape gets the
     same sign back, for every mode."""
-    from roadnoise_utils.response.modes import _shape_signs
+    from roadnoise_utils.tire.ring.modes import _shape_signs
 
     shapes = ru.loaded_modes(fet, flat, n_modes=40).shapes
     assert np.all(_shape_signs(shapes) == 1.0)

@@ -11,9 +11,9 @@ import pyuff
 
 import roadnoise_utils as ru
 from roadnoise_utils.response import uff
-from roadnoise_utils.response.frf import FRFResult
-from roadnoise_utils.response.section_footprint import footprint_frf
 from roadnoise_utils.tire.cross_section import stages as section_stages
+from roadnoise_utils.tire.cross_section.footprint import footprint_frf
+from roadnoise_utils.tire.ring.frf import FRFResult
 
 #: ASCII values are printed with 12 significant digits (%20.11e): each real and imaginary part comes
 #: back within half a unit of the 12th digit, 5e-12 of itself (plus the parse's 1e-16).
@@ -102,9 +102,9 @@ def test_ring_tire_frfs_round_trip(flat, fet, tmp_path):
 
 def test_cross_section_footprint_frfs_round_trip(tmp_path):
     name = "165_65R14_cross_section"
-    static = section_stages.section_static(name, "flat")
+    static = ru.stages.solve_static(name, "flat")
     frfs = footprint_frf(section_stages.section_tire(name), static, np.array([0.0, 80.0]))
-    back = ru.read_uff58(ru.write_uff58(tmp_path / "section.uff", frfs, binary=True, points=True))
+    back = ru.read_uff58(ru.write_uff58(tmp_path / "section.uff", frfs.to_frf_result(), binary=True, points=True))
     np.testing.assert_array_equal(back.H, frfs.H_tasselli().T)
     np.testing.assert_array_equal(back.H_tot, frfs.H_tot)
     np.testing.assert_array_equal(back.G_H, frfs.G_H)
@@ -161,7 +161,7 @@ GOOD = _synthetic(np.arange(0.0, 10.0), n_tasselli=3)
         (_bad(GOOD, H=GOOD.H[:, :-1]), ValueError, r"frfs.H has shape \(3, 9\)"),
         (_bad(GOOD, freqs=GOOD.freqs[::-1]), ValueError, "strictly increasing"),
         (_bad(GOOD, freqs=GOOD.freqs[:1], H=GOOD.H[:, :1]), ValueError, "at least 2 frequencies"),
-        (GOOD.H, TypeError, "frfs must be an FRFResult or a FootprintFRF"),
+        (GOOD.H, TypeError, "frfs must be an FRFResult"),
     ],
 )
 def test_bad_frfs_are_refused_and_nothing_is_written(tmp_path, frfs, error, message):

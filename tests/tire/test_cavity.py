@@ -5,8 +5,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+import roadnoise_utils as ru
 from roadnoise_utils.repro import stages
 from roadnoise_utils.tire import cavity
+from roadnoise_utils.tire.ring import cavity as ring_cavity
 
 TIRE = "195_65R15"
 
@@ -21,7 +23,7 @@ def test_air_and_the_rigid_torus(spec):
     cavity: 27.5 L, its first mode at c / (2 pi R) = 222 Hz, inside the 200-230 Hz of passenger tires."""
     c, rho = cavity.air(20.0, 2.3e5)
     assert c == pytest.approx(343.2, abs=0.1) and rho == pytest.approx((2.3e5 + 101325) / (287.05 * 293.15))
-    cav = cavity.ring_tire_cavity(spec)
+    cav = ring_cavity.ring_tire_cavity(spec)
     f = cavity.rigid_torus_frequencies(cav, [1, 2])
     assert f[1] == pytest.approx(2 * f[0]) and 200.0 < f[0] < 230.0
     assert 0.02 < cav.volume < 0.035
@@ -30,7 +32,7 @@ def test_air_and_the_rigid_torus(spec):
 def test_webster_modes_of_a_uniform_torus_are_the_closed_form(spec):
     """Uniform section: the doublets n = 1..3 at n c / (2 pi R) within the elements' (n dtheta)^2 / 12,
     one even and one odd mode each, and the uniform pressure at 0 Hz."""
-    cav = cavity.ring_tire_cavity(spec)
+    cav = ring_cavity.ring_tire_cavity(spec)
     modes = cavity.webster_modes(cav, n_modes=7)
     exact = cavity.rigid_torus_frequencies(cav, [1, 1, 2, 2, 3, 3])
     assert modes.freqs[0] < 1e-2
@@ -42,11 +44,11 @@ def test_loaded_doublet_splits_fore_aft_below_vertical_as_measured(spec):
     """Loaded, the odd (fore-aft) mode falls and the even (vertical) one rises, as measured (Choi &
     Bolton 2020, 2026); light load: the split is the first-order formula's (2 %); at the tire
     file's 4000 N it lies in the measured 2-14 Hz at rated load; a linear tire makes it linear in load."""
-    cav = cavity.ring_tire_cavity(spec)
+    cav = ring_cavity.ring_tire_cavity(spec)
     f1 = cavity.rigid_torus_frequencies(cav, 1)[0]
     splits = {}
     for load in (500.0, 2000.0, 4000.0):
-        area = cavity.loaded_area(cav, stages.solve_static(spec, load=load))
+        area = ring_cavity.loaded_area(cav, stages.solve_static(spec, load=load))
         fore_aft, vertical = cavity.webster_modes(cav, area).split()
         assert fore_aft < f1 < vertical
         splits[load] = vertical - fore_aft
@@ -60,7 +62,7 @@ def test_loaded_doublet_splits_fore_aft_below_vertical_as_measured(spec):
 
 
 def test_bad_cavity_input_is_refused(spec):
-    cav = cavity.ring_tire_cavity(spec)
+    cav = ring_cavity.ring_tire_cavity(spec)
     with pytest.raises(ValueError, match="outer_radius"):
         cavity.Cavity(0.2, 0.15, 0.15, 343.0, 3.9)
     with pytest.raises(ValueError, match="area must be positive"):
@@ -74,12 +76,12 @@ def test_a_rigid_translation_carries_the_air_it_holds(spec):
     waveguide's pressure on the walls is the inertia of the axially sloshing air, rho V / 2 (the 1-D
     model's share of the air's mass; within 3 % on the loaded section, whose footprint the faces,
     drawn for the unloaded section, do not follow)."""
-    from roadnoise_utils.tire.ring_model import UZ
+    from roadnoise_utils.tire.ring.mechanics import UZ
 
-    fet = stages.build_fet(spec)
+    fet = ru.build_fet(spec)
     static = stages.solve_static(spec)
-    cav = cavity.ring_tire_cavity(spec)
-    coupling = cavity.ring_cavity_coupling(fet, static, cav, n_modes=fet.mesh.n_elements)
+    cav = ring_cavity.ring_tire_cavity(spec)
+    coupling = ring_cavity.ring_cavity_coupling(fet, static, cav, n_modes=fet.mesh.n_elements)
     mesh = fet.mesh
     up = np.zeros(fet.n_dof)
     strips, nodes = np.meshgrid(np.arange(mesh.n_strips), np.arange(mesh.n_elements), indexing="ij")
@@ -98,9 +100,9 @@ def test_a_rigid_translation_carries_the_air_it_holds(spec):
 def test_sidewall_gain_is_the_bulging_arcs_area_by_a_second_method(spec):
     """The area an inextensible sidewall arc encloses as the belt edge comes down, computed here by
     sampling the arc and the shoelace formula (the arc's radius found by bisection on its length),
-    equals :func:`cavity.sidewall_gain` (1 %); it gives back about half the belt's loss."""
+    equals :func:`roadnoise_utils.tire.ring.cavity.sidewall_gain` (1 %); it gives back about half the belt's loss."""
     g = spec.geometry
-    cav = cavity.ring_tire_cavity(spec)
+    cav = ring_cavity.ring_tire_cavity(spec)
     bead = np.array([g.rim_radius, 0.5 * spec.operating.rim_width])
     widest = np.array([g.max_width_radius, 0.5 * g.section_width])
     edge = np.array([cav.outer_radius, 0.5 * g.belt_width])
@@ -126,7 +128,7 @@ def test_sidewall_gain_is_the_bulging_arcs_area_by_a_second_method(spec):
 
     step = 1e-4
     gain = (enclosed(edge - [step, 0.0]) - enclosed(edge + [step, 0.0])) / (2 * step)
-    assert cavity.sidewall_gain(spec, cav) == pytest.approx(gain, rel=0.01)
+    assert ring_cavity.sidewall_gain(spec, cav) == pytest.approx(gain, rel=0.01)
     assert 0.3 < 2 * gain / g.belt_width < 0.7
 
 
@@ -134,12 +136,12 @@ def test_rolling_splits_each_doublet_by_the_wheels_rotation(spec):
     """The air streaming through the fixed footprint: on a uniform torus the first doublet goes to
     f1 (1 -/+ U/c) (1e-5); at rest the loaded split is the standing waves'; rolling, the loaded doublet
     sits at f_mean -/+ sqrt((split/2)^2 + f_rot^2) with f_rot = U / (2 pi R) the rotation frequency (2 %)."""
-    cav = cavity.ring_tire_cavity(spec)
+    cav = ring_cavity.ring_tire_cavity(spec)
     f1 = cavity.rigid_torus_frequencies(cav, 1)[0]
     beta = 20.0 / cav.sound_speed
     _, uniform = cavity.rolling_modes(cav, np.full(720, cav.area), 20.0)
     np.testing.assert_allclose(uniform[:2], [f1 * (1 - beta), f1 * (1 + beta)], rtol=1e-5)
-    area = cavity.loaded_area(cav, stages.solve_static(spec))
+    area = ring_cavity.loaded_area(cav, stages.solve_static(spec))
     fore_aft, vertical = cavity.webster_modes(cav, area).split()
     _, still = cavity.rolling_modes(cav, area, 0.0)
     np.testing.assert_allclose(still[:2], [fore_aft, vertical], rtol=1e-6)

@@ -12,19 +12,18 @@ from typing import Any
 
 import numpy as np
 
-from ...response import fe_reference
-from ...response import section_footprint as footprint
+from ...response import band_limit as fe_reference
 from ...response.modal_reduction import ModalReduction
-from ...response.one_sided import ContactRun
 from ...road.cleat import cleat_input, cleat_profile, point_heights
 from ...road.input import RoadInput
-from .. import section_cavity
-from .. import section_static as static_module
 from ..cavity import Cavity
+from ..contact import ContactRun
 from ..model import ContactSetup, FRFResult, LoadCase, TireModel, register
-from ..section_static import SectionStaticState
-from . import stages
+from . import cavity as section_cavity
+from . import footprint, stages
+from . import static as static_module
 from .spec import CrossSectionSpec, from_dict
+from .static import SectionStaticState
 
 #: Time step of the one-sided dynamic runs (s): a whole number of samples per second, so that a 1 s
 #: record falls on the 1 Hz grid of the footprint FRFs (the frozen check); 1.39 mm of travel at 30 km/h,
@@ -40,7 +39,7 @@ QUASI_STATIC_STEP = 1.0e-3
 
 @register
 class CrossSectionModel(TireModel):
-    """The layered waveguide tire built from its construction (:mod:`roadnoise_utils.tire.section_model`)."""
+    """The layered waveguide tire built from its construction (:mod:`roadnoise_utils.tire.cross_section.operators`)."""
 
     kind = "cross-section"
     capabilities = frozenset(
@@ -73,7 +72,7 @@ class CrossSectionModel(TireModel):
 
     def load(self, case: LoadCase) -> SectionStaticState:
         """:func:`.stages.section_static` (cached)."""
-        return stages.section_static(self.spec, case.road.kind, case.load, case.drum_radius)
+        return stages.section_static(self.spec, case)
 
     def fixed_hub_frfs(
         self, case: LoadCase, freqs: np.ndarray | None = None, progress: bool = False, stick: bool | None = None
@@ -85,12 +84,10 @@ class CrossSectionModel(TireModel):
                 "stick = True: the cross-section tire's contact points slide freely (frictionless, vertical "
                 "only); valid values are None or False"
             )
-        return stages.section_footprint(
-            self.spec, case.road.kind, freqs, case.load, case.drum_radius, progress
-        ).to_frf_result()
+        return stages.section_footprint(self.spec, case, freqs, progress).to_frf_result()
 
     def air_cavity(self, temperature: float | None = None) -> Cavity:
-        """:func:`roadnoise_utils.tire.section_cavity.section_cavity`: the inner surface from bead to bead, closed by the rim."""
+        """:func:`roadnoise_utils.tire.cross_section.cavity.section_cavity`: the inner surface from bead to bead, closed by the rim."""
         return section_cavity.section_cavity(stages.section_tire(self.spec), temperature).cavity
 
     def loaded_cavity_areas(
@@ -101,14 +98,14 @@ class CrossSectionModel(TireModel):
 
     def modal_reduction(self, case: LoadCase, **options: Any) -> ModalReduction:
         """:func:`.stages.section_modal` (cached): loaded modes by component-mode synthesis of its harmonics."""
-        return stages.section_modal(self.spec, case.road.kind, load=case.load, drum_radius=case.drum_radius, **options)
+        return stages.section_modal(self.spec, case, **options)
 
     def direct_cleat_response(self, case: LoadCase, cleat: dict[str, Any]) -> tuple[RoadInput, np.ndarray]:
-        """The frequency-domain sum (:func:`~roadnoise_utils.response.fe_reference.frequency_domain_response`)
+        """The frequency-domain sum (:func:`~roadnoise_utils.response.band_limit.frequency_domain_response`)
         of a cleat over the direct tassello FRFs (``cleat``: speed, height, base, shape, distance, duration, band)."""
         state = self.load(case)
         road = cleat_input(state, cleat["speed"], cleat["height"], cleat["base"], cleat["shape"], cleat["distance"])
-        frfs = stages.tassello_frfs(self.spec, case.road.kind, case.load, case.drum_radius)
+        frfs = stages.tassello_frfs(self.spec, case)
         return road, fe_reference.frequency_domain_response(frfs, road.u, road.dt, cleat["band"], cleat["duration"])
 
     def one_sided_setup(self, conditions: Any) -> ContactSetup:
@@ -119,13 +116,10 @@ class CrossSectionModel(TireModel):
     def frozen_reference(
         self, case: LoadCase, run: ContactRun, cleat: tuple[float, float, str], duration: float
     ) -> tuple[np.ndarray, np.ndarray]:
-        """:func:`~roadnoise_utils.response.fe_reference.frequency_domain_response` of the footprint FRFs
+        """:func:`~roadnoise_utils.response.band_limit.frequency_domain_response` of the footprint FRFs
         (:func:`.stages.section_footprint`, 1 Hz grid) to the hat-averaged cleat heights under every
         static contact point; both hub forces band-limited to :data:`CONTACT_BAND` Hz the same way."""
-        state, footprint_frfs = (
-            self.load(case),
-            stages.section_footprint(self.spec, case.road.kind, drum_radius=case.drum_radius),
-        )
+        state, footprint_frfs = self.load(case), stages.section_footprint(self.spec, case)
         grid = state.grid
         x, _ = grid.xz()
         col, row = state.points

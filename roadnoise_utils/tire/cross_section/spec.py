@@ -3,14 +3,14 @@
 A cross-section tire file describes the tire as it is built: the outer
 profile, the sidewall meridian from the bead to the belt edge, and the layers with their
 thickness, density, moduli and compound. It is validated as strictly as a ring file
-(:mod:`.spec`): every missing, unknown, non-numeric or out-of-range value is refused with its
+(:mod:`roadnoise_utils.tire.ring.spec`): every missing, unknown, non-numeric or out-of-range value is refused with its
 name, unit and valid range.
 
 Layer kinds:
 
 * ``rubber``: isotropic (``youngs_modulus``, ``poisson``): liner, sidewall, undertread.
 * ``cord``: a cord-rubber ply, its constants from cord and matrix by the rule of mixtures and
-  Halpin-Tsai (:mod:`.laminate`), at ``cord_angle`` from the circumferential direction.
+  Halpin-Tsai (:mod:`roadnoise_utils.tire.cross_section.laminate`), at ``cord_angle`` from the circumferential direction.
 * ``tread``: the grooved tread as a smeared layer of bonded blocks: normal modulus
   :math:`E(1 + 2S^2)(1 - v)` with shape factor ``S`` (Gent & Lindley, Proc. IMechE 173, 1959)
   and groove void ratio ``v``, in-plane and shear moduli :math:`E(1 - v)` and
@@ -25,18 +25,21 @@ from typing import Any
 
 import numpy as np
 
-from .. import laminate
-from ..spec import (
+from ..schema import (
     NO_CAVITY,
     AirCavity,
     Compound,
     Operating,
     Tassellation,
+    build_cavity,
+    build_compounds,
     build_section,
-    check_model,
+    check_sections,
     param,
     set_parameter,
+    tire_name,
 )
+from . import laminate
 
 
 @dataclass(frozen=True)
@@ -107,7 +110,7 @@ class CordLayer:
     compound: str = field(default="", metadata={"compound": True})
 
     def constants(self) -> dict[str, float]:
-        """Engineering constants (:func:`.laminate.cord_ply_constants`)."""
+        """Engineering constants (:func:`roadnoise_utils.tire.cross_section.laminate.cord_ply_constants`)."""
         return laminate.cord_ply_constants(self.cord_modulus, self.matrix_modulus, self.cord_volume_fraction)
 
     def stiffness(self) -> np.ndarray:
@@ -148,7 +151,7 @@ STACKS = {
 
 @dataclass(frozen=True)
 class CrossSectionSpec:
-    """All parameters of a cross-section tire, validated. Build it with :func:`.spec.load_tire`."""
+    """All parameters of a cross-section tire, validated. Build it with :func:`roadnoise_utils.tire.ring.spec.load_tire`."""
 
     name: str
     geometry: SectionGeometry
@@ -229,30 +232,17 @@ def _layer(name: str, values: Any, source: str, compounds: dict) -> RubberLayer 
 
 
 def _numeric_view(cls: type) -> type:
-    """A dataclass with only the numeric fields of ``cls`` (for :func:`.spec.build_section`)."""
+    """A dataclass with only the numeric fields of ``cls`` (for :func:`roadnoise_utils.tire.ring.spec.build_section`)."""
     fields = [(f.name, float, field(metadata=f.metadata)) for f in dataclasses.fields(cls) if "range" in f.metadata]
     return dataclasses.make_dataclass(cls.__name__, fields, frozen=True)
 
 
 def from_dict(data: dict[str, Any], source: str = "<dict>") -> CrossSectionSpec:
     """Validate nested data (the TOML layout) and build a :class:`CrossSectionSpec`."""
-    expected = {"tire", "compounds", "layers", "construction", "pneumatic", *SECTIONS}
-    missing = sorted(expected - set(data))
-    expected.add("cavity")  # optional: absent, the cavity is off (the paper's model)
-    if missing:
-        raise ValueError(f"{source}: missing section(s) {['[' + m + ']' for m in missing]}")
-    unknown = sorted(set(data) - expected)
-    if unknown:
-        raise ValueError(f"{source}: unknown section(s) {unknown}; expected {sorted(expected)}")
-    name = data["tire"].get("name")
-    if not isinstance(name, str) or not name:
-        raise ValueError(f"{source}: [tire] name must be a non-empty string")
-    check_model(data, source, "cross-section")
+    check_sections(data, source, {"tire", "compounds", "layers", "construction", "pneumatic", *SECTIONS}, {"cavity"})
+    name = tire_name(data, source, "cross-section")
     sections = {key: build_section(cls, data[key], key, source) for key, cls in SECTIONS.items()}
-    compounds = {
-        key: build_section(Compound, value, f"compounds.{key}", source)
-        for key, value in sorted(data["compounds"].items())
-    }
+    compounds = build_compounds(data, source)
     layers = {key: _layer(key, value, source, compounds) for key, value in data["layers"].items()}
     construction = _construction(data["construction"], layers, source)
     pneumatic = data["pneumatic"].get("compound") if isinstance(data["pneumatic"], dict) else None
@@ -267,7 +257,7 @@ def from_dict(data: dict[str, Any], source: str = "<dict>") -> CrossSectionSpec:
         construction=construction,
         compounds=compounds,
         pneumatic=pneumatic,
-        cavity=build_section(AirCavity, data["cavity"], "cavity", source) if "cavity" in data else NO_CAVITY,
+        cavity=build_cavity(data, source),
         source=source,
         **sections,
     )

@@ -3,21 +3,21 @@
 =============================  ==========================================================================
 stage                          caches
 =============================  ==========================================================================
-:func:`section_static`         :func:`roadnoise_utils.tire.section_static.solve_section_static`
-:func:`footprint_reductions`   :func:`roadnoise_utils.response.section_footprint.footprint_reductions`
+:func:`roadnoise_utils.tire.cross_section.static`         :func:`roadnoise_utils.tire.cross_section.static.solve_section_static`
+:func:`footprint_reductions`   :func:`roadnoise_utils.tire.cross_section.footprint.footprint_reductions`
                                (the harmonics reduced for a band: shared by the loaded states)
-:func:`section_footprint`      :func:`roadnoise_utils.response.section_footprint.footprint_frf`
+:func:`roadnoise_utils.tire.cross_section.footprint`      :func:`roadnoise_utils.tire.cross_section.footprint.footprint_frf`
                                (default 0-400 Hz every 1 Hz)
-:func:`section_modal`          :func:`roadnoise_utils.response.section_modal.section_modal_reduction`
+:func:`roadnoise_utils.tire.cross_section.modal`          :func:`roadnoise_utils.tire.cross_section.modal.section_modal_reduction`
                                on the default sweep
-:func:`frozen_check`           :func:`roadnoise_utils.response.section_modal.frozen_check`
-:func:`quasi_static_cleat`     :func:`roadnoise_utils.response.section_one_sided.section_quasi_static_run`
+:func:`frozen_check`           :func:`roadnoise_utils.tire.cross_section.modal.frozen_check`
+:func:`quasi_static_cleat`     :func:`roadnoise_utils.tire.cross_section.one_sided.section_quasi_static_run`
                                of a cleat on the drum
-:func:`harmonic_reductions`    :func:`roadnoise_utils.tire.section_stepping.reduce_all` (every harmonic)
-:func:`dynamic_cleat_runs`     :func:`roadnoise_utils.response.section_one_sided.section_dynamic_runs`
+:func:`harmonic_reductions`    :func:`roadnoise_utils.tire.cross_section.stepping.reduce_all` (every harmonic)
+:func:`dynamic_cleat_runs`     :func:`roadnoise_utils.tire.cross_section.one_sided.section_dynamic_runs`
                                of a cleat on the drum: the one-sided run and its frozen twin,
                                stepped together (:func:`dynamic_cleat` picks one)
-:func:`cavity_areas`           :func:`roadnoise_utils.tire.section_cavity.loaded_areas` on the flat
+:func:`cavity_areas`           :func:`roadnoise_utils.tire.cross_section.cavity.loaded_areas` on the flat
                                road at several loads (one compliance and one factorisation per
                                harmonic for all)
 =============================  ==========================================================================
@@ -33,20 +33,16 @@ from pathlib import Path
 import numpy as np
 
 from ...repro.cache import cached
-from ...response import section_cavity_frf as cavity_frf
-from ...response import section_footprint as footprint
-from ...response import section_modal as modal
-from ...response import section_one_sided as one_sided
 from ...response.modal_reduction import ModalReduction
-from ...response.one_sided import ContactRun
-from ...response.section_footprint import FootprintFRF
 from ...road.cleat import cleat_profile
-from .. import section_cavity as cavity_module
-from .. import section_static as static_module
-from .. import section_stepping as stepping
+from ..contact import ContactRun
 from ..model import DEFAULT_FREQS, LoadCase, load_tire
-from ..section_static import SectionStaticState, SectionTire, build_section_tire
+from . import cavity as cavity_module
+from . import cavity_frf, footprint, modal, one_sided, stepping
+from . import static as static_module
+from .footprint import FootprintFRF
 from .spec import CrossSectionSpec
+from .static import SectionStaticState, SectionTire, build_section_tire
 
 SectionTireLike = str | Path | CrossSectionSpec
 
@@ -76,18 +72,19 @@ def _no_cavity(tire: SectionTireLike, stage: str) -> None:
         )
 
 
-def _inputs(tire: SectionTireLike, road: str, load: float | None, drum_radius: float | None) -> dict:
+def nominal_case(tire: SectionTireLike, road: str = "flat", drum_radius: float | None = None) -> LoadCase:
+    """The load case of the tire file's nominal load on a road (``drum_radius`` in m for a drum)."""
+    return LoadCase.of(road, load_section_tire(tire).operating.vertical_load, drum_radius)
+
+
+def _inputs(tire: SectionTireLike, case: LoadCase) -> dict:
     """The cache key's core: the tire file's every value and the load case."""
-    spec = load_section_tire(tire)
-    case = LoadCase.of(road, spec.operating.vertical_load if load is None else load, drum_radius)
-    return {"tire": spec, **case.key()}
+    return {"tire": load_section_tire(tire), **case.key()}
 
 
-def section_static(
-    tire: SectionTireLike, road: str = "flat", load: float | None = None, drum_radius: float | None = None
-) -> SectionStaticState:
-    """Cached :func:`.tire.section_static.solve_section_static`; ``drum_radius`` (m) required for a drum."""
-    inputs = _inputs(tire, road, load, drum_radius)
+def section_static(tire: SectionTireLike, case: LoadCase) -> SectionStaticState:
+    """Cached :func:`roadnoise_utils.tire.cross_section.static.solve_section_static` for a load case."""
+    inputs = _inputs(tire, case)
 
     def compute() -> SectionStaticState:
         drum = inputs["drum_radius"] if inputs["road"] == "drum" else None
@@ -98,22 +95,17 @@ def section_static(
 
 
 def section_footprint(
-    tire: SectionTireLike,
-    road: str = "flat",
-    freqs: np.ndarray | None = None,
-    load: float | None = None,
-    drum_radius: float | None = None,
-    progress: bool = False,
+    tire: SectionTireLike, case: LoadCase, freqs: np.ndarray | None = None, progress: bool = False
 ) -> FootprintFRF:
-    """Cached :func:`.response.section_footprint.footprint_frf` (default 0-400 Hz every 1 Hz).
+    """Cached :func:`roadnoise_utils.tire.cross_section.footprint.footprint_frf` (default 0-400 Hz every 1 Hz).
 
     Frequencies of the default grid (whole Hz, 0-400) are read from its cached result.
     """
-    inputs = _inputs(tire, road, load, drum_radius)
+    inputs = _inputs(tire, case)
     freqs = DEFAULT_FREQS if freqs is None else np.asarray(freqs, dtype=float)
     if not np.array_equal(freqs, DEFAULT_FREQS) and np.all(np.isin(freqs, DEFAULT_FREQS)):
-        return section_footprint(tire, road, None, load, drum_radius, progress).at(freqs)
-    state = section_static(tire, road, load, drum_radius)
+        return section_footprint(tire, case, None, progress).at(freqs)
+    state = section_static(tire, case)
 
     def compute() -> FootprintFRF:
         f_max = float(freqs.max())
@@ -126,7 +118,7 @@ def section_footprint(
 
 
 def footprint_reductions(tire: SectionTireLike, f_max: float, cutoff: float) -> footprint.FootprintReductions:
-    """Cached :func:`.response.section_footprint.footprint_reductions`: every harmonic reduced for
+    """Cached :func:`roadnoise_utils.tire.cross_section.footprint.footprint_reductions`: every harmonic reduced for
     ``0..f_max`` Hz with its modes below ``cutoff`` Hz; shared by the flat road's and the drum's
     footprints and by the time stepping's modal harmonics (:func:`harmonic_reductions`)."""
     inputs = {"tire": load_section_tire(tire), "f_max": float(f_max), "cutoff": float(cutoff)}
@@ -139,33 +131,29 @@ def footprint_reductions(tire: SectionTireLike, f_max: float, cutoff: float) -> 
     return cached(footprint_reductions, inputs, compute, runs=(footprint.footprint_reductions,))
 
 
-def tassello_frfs(
-    tire: SectionTireLike, road: str = "flat", load: float | None = None, drum_radius: float | None = None
-) -> Callable[[np.ndarray], np.ndarray]:
+def tassello_frfs(tire: SectionTireLike, case: LoadCase) -> Callable[[np.ndarray], np.ndarray]:
     """The direct tassello FRFs :math:`H_i(f)` (n_tasselli, n_f; N/m) as a function of the frequencies (Hz)."""
 
     def frfs(freqs: np.ndarray) -> np.ndarray:
-        return section_footprint(tire, road, freqs, load, drum_radius).H_tasselli().T
+        return section_footprint(tire, case, freqs).H_tasselli().T
 
     return frfs
 
 
 def section_modal(
     tire: SectionTireLike,
-    road: str = "flat",
+    case: LoadCase,
     frozen: str = "complex",
     damping: str = "identified",
     reference_frequency: float | None = None,
-    load: float | None = None,
-    drum_radius: float | None = None,
     f_band: float = 250.0,
 ) -> ModalReduction:
-    """Cached :func:`.response.section_modal.section_modal_reduction` on the default direct sweep."""
+    """Cached :func:`roadnoise_utils.tire.cross_section.modal.section_modal_reduction` on the default direct sweep."""
     _no_cavity(tire, "section_modal")
-    inputs = _inputs(tire, road, load, drum_radius)
+    inputs = _inputs(tire, case)
     options = {"frozen": frozen, "damping": damping, "reference_frequency": reference_frequency, "f_band": f_band}
-    state = section_static(tire, road, load, drum_radius)
-    visco = section_footprint(tire, road, None, load, drum_radius).to_frf_result()
+    state = section_static(tire, case)
+    visco = section_footprint(tire, case).to_frf_result()
 
     def compute() -> ModalReduction:
         built = build_section_tire(inputs["tire"])
@@ -185,13 +173,13 @@ def section_modal(
     )
 
 
-def frozen_check(
-    tire: SectionTireLike, reference_frequency: float, freqs: np.ndarray, road: str = "flat"
-) -> modal.FrozenCheck:
-    """Cached :func:`.response.section_modal.frozen_check` (the synthesis and the direct frozen solve)."""
-    inputs = _inputs(tire, road, None, None)
+def frozen_check(tire: SectionTireLike, reference_frequency: float, freqs: np.ndarray) -> modal.FrozenCheck:
+    """Cached :func:`roadnoise_utils.tire.cross_section.modal.frozen_check` (the synthesis and the direct frozen
+    solve) on the flat road at the nominal load."""
+    case = nominal_case(tire)
+    inputs = _inputs(tire, case)
     options = {"reference_frequency": float(reference_frequency), "freqs": np.asarray(freqs, float)}
-    state = section_static(tire, road)
+    state = section_static(tire, case)
 
     def compute() -> modal.FrozenCheck:
         built = build_section_tire(inputs["tire"])
@@ -215,15 +203,10 @@ def quasi_static_cleat(
     step: float = 1.0e-3,
 ) -> ContactRun:
     """Cached quasi-static cleat passage with one-sided contact on the drum (cleat and travel in m)."""
-    inputs = _inputs(tire, "drum", None, drum_radius)
-    options = {
-        "height": float(height),
-        "base": float(base),
-        "shape": shape,
-        "distance": tuple(float(d) for d in distance),
-        "step": float(step),
-    }
-    state = section_static(tire, "drum", drum_radius=drum_radius)
+    case = nominal_case(tire, "drum", drum_radius)
+    inputs = _inputs(tire, case)
+    options = {**_cleat(height, base, shape, distance), "step": float(step)}
+    state = section_static(tire, case)
 
     def compute() -> ContactRun:
         built = build_section_tire(inputs["tire"])
@@ -234,8 +217,13 @@ def quasi_static_cleat(
     return cached(quasi_static_cleat, {**inputs, **options}, compute, runs=runs)
 
 
+def _cleat(height: float, base: float, shape: str, distance: tuple[float, float]) -> dict:
+    """A cleat passage's key: the cleat (m) and the travel (m)."""
+    return {"height": float(height), "base": float(base), "shape": shape, "distance": tuple(float(d) for d in distance)}
+
+
 def harmonic_reductions(tire: SectionTireLike, f_max: float = 400.0) -> list:
-    """Cached :func:`.tire.section_stepping.reduce_all`: every harmonic's Ritz basis for the time-stepped runs."""
+    """Cached :func:`roadnoise_utils.tire.cross_section.stepping.reduce_all`: every harmonic's Ritz basis for the time-stepped runs."""
     _no_cavity(tire, "harmonic_reductions")
     inputs = {"tire": load_section_tire(tire), "f_max": float(f_max)}
 
@@ -277,19 +265,13 @@ def dynamic_cleat_runs(
 ) -> tuple[ContactRun, ContactRun]:
     """Cached dynamic cleat passage on the drum: (one-sided contact, frozen contact), stepped together.
 
-    Stepping the two runs in one :class:`.tire.section_stepping.HarmonicStepper` reads the
+    Stepping the two runs in one :class:`roadnoise_utils.tire.cross_section.stepping.HarmonicStepper` reads the
     harmonics' operators once per step for both: the pair costs ~30 % less than two runs.
     """
-    inputs = _inputs(tire, "drum", None, drum_radius)
-    options = {
-        "speed": float(speed),
-        "height": float(height),
-        "base": float(base),
-        "shape": shape,
-        "distance": tuple(float(d) for d in distance),
-        "dt": None if dt is None else float(dt),
-    }
-    state = section_static(tire, "drum", drum_radius=drum_radius)
+    case = nominal_case(tire, "drum", drum_radius)
+    inputs = _inputs(tire, case)
+    options = {"speed": float(speed), **_cleat(height, base, shape, distance), "dt": None if dt is None else float(dt)}
+    state = section_static(tire, case)
 
     def compute() -> tuple[ContactRun, ContactRun]:
         built = build_section_tire(inputs["tire"])
@@ -306,7 +288,7 @@ def dynamic_cleat_runs(
 
 def cavity_areas(tire: SectionTireLike, loads: tuple[float, ...]) -> tuple[list[SectionStaticState], np.ndarray]:
     """Cached loaded states on the flat road at ``loads`` (N) and the cavity's Webster area of each
-    (:func:`.tire.section_cavity.loaded_areas`, (n_loads, 720) m^2): the split against the load."""
+    (:func:`roadnoise_utils.tire.cross_section.cavity.loaded_areas`, (n_loads, 720) m^2): the split against the load."""
     inputs = {"tire": load_section_tire(tire), "loads": tuple(float(v) for v in loads)}
 
     def compute() -> tuple[list[SectionStaticState], np.ndarray]:

@@ -4,7 +4,7 @@ Like python-control's ``FrequencyResponseData`` beside ``StateSpace``, it answer
 can answer — the loaded footprint and the fixed-hub FRFs of each load case its files give, and
 ``G_H`` where they carry it — and nothing else: the modal reduction, an FE reference of a road
 input, contact loss and the air cavity need an FE model and are "not applicable". Its files are
-read and validated once, with the tire file (:mod:`.spec`), and travel in the spec, so the stage
+read and validated once, with the tire file (:mod:`roadnoise_utils.tire.ring.spec`), and travel in the spec, so the stage
 cache keys on their contents.
 """
 
@@ -27,7 +27,7 @@ FREQUENCY_MATCH = 1e-9
 
 @register
 class FRFFileModel(TireModel):
-    """A tire given by its footprint FRFs and footprint geometry, per load case (:mod:`.spec`)."""
+    """A tire given by its footprint FRFs and footprint geometry, per load case (:mod:`roadnoise_utils.tire.ring.spec`)."""
 
     kind = "frf-file"
     capabilities = frozenset({"hub_transfer"})  # only where every file carries G_H (:meth:`has`)

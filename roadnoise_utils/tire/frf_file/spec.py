@@ -36,9 +36,11 @@ from typing import Any, ClassVar
 import numpy as np
 
 from ... import guards
+from ...guards import LOAD_RANGE
 from ...response.uff import read_uff58
 from ..footprint_file import read_footprint_csv
 from ..model import FRFResult
+from ..schema import build_section, check_keys, check_sections, param, tire_name
 from ..surface import make_road
 from ..tasselli import Tasselli
 
@@ -50,6 +52,20 @@ SUPERPOSITION_WARNING = 1e-3
 #: as the FRFs hold it, and a K_v from a static solve that lets it slide differs by a few per cent
 #: (1.6 % on the ring tire's coarse test mesh on the drum, 5.5e-5 at its default mesh on the flat road).
 STIFFNESS_WARNING = 0.05
+
+
+@dataclass(frozen=True)
+class FileOperating:
+    """The ``[operating]`` table of a tire from files."""
+
+    vertical_load: float = param("N", *LOAD_RANGE, "nominal vertical load: the default load case's")
+
+
+@dataclass(frozen=True)
+class Hub:
+    """The ``[hub]`` table of a tire from files."""
+
+    rim_side_mass: float = param("kg", 0.0, 50.0, "the FE tire's mass the hub carries besides G_H (Eq. 5-7)")
 
 
 @dataclass(frozen=True, eq=False)
@@ -130,22 +146,10 @@ class FRFFileSpec:
 def from_dict(data: dict[str, Any], source: str = "<dict>", folder: Path | None = None) -> FRFFileSpec:
     """Validate a tire file's contents and read its data files (paths relative to ``folder``)."""
     folder = Path(".") if folder is None else Path(folder)
-    _keys(data, {"tire", "operating", "hub", "load_case"}, source, "the file")
-    tire = _table(data, "tire", source)
-    _keys(tire, {"model", "name"}, source, "[tire]")
-    if tire.get("model") != FRFFileSpec.model:
-        raise ValueError(f"{source}: [tire] model = {tire.get('model')!r} where a 'frf-file' tire file is expected")
-    name = tire.get("name")
-    if not isinstance(name, str) or not name.strip():
-        raise ValueError(f"{source}: [tire] name must be a non-empty string")
-    operating = _table(data, "operating", source)
-    _keys(operating, {"vertical_load"}, source, "[operating]")
-    vertical_load = guards.real(
-        "[operating] vertical_load", _value(operating, "vertical_load", source), *guards.LOAD_RANGE, unit="N"
-    )
-    hub = _table(data, "hub", source)
-    _keys(hub, {"rim_side_mass"}, source, "[hub]")
-    rim_side_mass = guards.real("[hub] rim_side_mass", _value(hub, "rim_side_mass", source), 0.0, 50.0, unit="kg")
+    check_sections(data, source, {"tire", "operating", "hub", "load_case"})
+    name = tire_name(data, source, FRFFileSpec.model)
+    vertical_load = build_section(FileOperating, data["operating"], "operating", source).vertical_load
+    rim_side_mass = build_section(Hub, data["hub"], "hub", source).rim_side_mass
     entries = data.get("load_case")
     if not isinstance(entries, list) or not entries or not all(isinstance(e, dict) for e in entries):
         raise ValueError(f"{source}: give at least one [[load_case]] table (road, frfs, footprint)")
@@ -163,7 +167,9 @@ def from_dict(data: dict[str, Any], source: str = "<dict>", folder: Path | None 
 
 def _case(entry: dict, number: int, default_load: float, source: str, folder: Path) -> FileCase:
     where = f"{source}, [[load_case]] {number}"
-    _keys(entry, {"road", "drum_radius", "load", "frfs", "footprint", "vertical_stiffness", "deflection"}, where, "it")
+    check_keys(
+        entry, {"road", "drum_radius", "load", "frfs", "footprint", "vertical_stiffness", "deflection"}, where, "it"
+    )
     road = entry.get("road", "flat")
     if road not in ("flat", "drum"):
         raise ValueError(f"{where}: road = {road!r}: valid values are 'flat' and 'drum'")
@@ -233,22 +239,3 @@ def _check_superposition(frfs: FRFResult, where: str) -> None:
         guards.warn(
             f"{where}: the tasselli's FRFs sum to H_tot within {error:.2g} only (Eq. i); is a tassello missing?"
         )
-
-
-def _table(data: dict, name: str, source: str) -> dict:
-    table = data.get(name)
-    if not isinstance(table, dict):
-        raise ValueError(f"{source}: a [{name}] table is required")
-    return table
-
-
-def _value(table: dict, key: str, source: str) -> Any:
-    if key not in table:
-        raise ValueError(f"{source}: {key} is missing")
-    return table[key]
-
-
-def _keys(table: dict, allowed: set[str], source: str, where: str) -> None:
-    unknown = sorted(set(table) - allowed)
-    if unknown:
-        raise ValueError(f"{source}: {where} has unknown key(s) {unknown}; valid keys are {sorted(allowed)}")

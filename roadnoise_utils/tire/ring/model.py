@@ -14,23 +14,24 @@ import numpy as np
 
 from ... import guards
 from ...repro.cache import cached
-from ...response import fe_reference, frf, modes, one_sided
-from ...response import modal_reduction as modal
+from ...response import band_limit
 from ...response.modal_reduction import ModalReduction
-from ...response.modes import LoadedModes
 from ...road.cleat import cleat_profile, point_heights
 from ...road.input import RoadInput
-from .. import cavity as cavity_model
-from .. import ring_model, static
+from .. import cavity as shared_cavity
+from ..contact import ContactRun
 from ..model import DEFAULT_FREQS, ContactSetup, FRFResult, LoadCase, TireModel, register
-from ..ring_model import FETModel
-from ..spec import TireSpec, from_dict
-from ..static import DEFLECTION_LIMIT, StaticState
+from . import cavity, fe_reference, frf, modal_reduction, modes, one_sided, static
+from . import mechanics as ring_model
+from .mechanics import FETModel
+from .modes import LoadedModes
+from .spec import TireSpec, from_dict
+from .static import DEFLECTION_LIMIT, StaticState
 
 
 @register
 class RingModel(TireModel):
-    """Coupled rings on a viscoelastic foundation (:mod:`roadnoise_utils.tire.ring_model`), 8103 DOF by default."""
+    """Coupled rings on a viscoelastic foundation (:mod:`roadnoise_utils.tire.ring.mechanics`), 8103 DOF by default."""
 
     kind = "ring"
     capabilities = frozenset(
@@ -66,7 +67,7 @@ class RingModel(TireModel):
         return int(self.build_fet().n_dof)
 
     def rim_side_mass(self) -> float:
-        """:attr:`~roadnoise_utils.tire.ring_model.FETModel.hub_vertical_mass` (kg)."""
+        """:attr:`~roadnoise_utils.tire.ring.mechanics.FETModel.hub_vertical_mass` (kg)."""
         return self.build_fet().hub_vertical_mass
 
     def frf_runs(self) -> tuple:
@@ -84,7 +85,7 @@ class RingModel(TireModel):
             )
 
     def load(self, case: LoadCase) -> StaticState:
-        """:func:`roadnoise_utils.tire.static.solve_static` on ``case`` (cached as ``solve_static``)."""
+        """:func:`roadnoise_utils.tire.ring.static.solve_static` on ``case`` (cached as ``solve_static``)."""
 
         def compute() -> StaticState:
             return static.solve_static(
@@ -102,7 +103,7 @@ class RingModel(TireModel):
     def fixed_hub_frfs(
         self, case: LoadCase, freqs: np.ndarray | None = None, progress: bool = False, stick: bool | None = None
     ) -> FRFResult:
-        """:func:`roadnoise_utils.response.frf.frf_visco` (cached as ``frf_visco``; default
+        """:func:`roadnoise_utils.tire.ring.frf.frf_visco` (cached as ``frf_visco``; default
         :data:`~roadnoise_utils.tire.model.DEFAULT_FREQS`); ``stick``: the footprint held in all
         directions (default) or free to slide."""
         freqs = DEFAULT_FREQS if freqs is None else np.asarray(freqs, dtype=float)
@@ -119,50 +120,48 @@ class RingModel(TireModel):
             RingModel.fixed_hub_frfs,
             {**self._inputs(case), "freqs": freqs, "stick": stick},
             compute,
-            runs=(frf.frf_visco, static.solve_static, cavity_model.ring_cavity_coupling),
+            runs=(frf.frf_visco, static.solve_static, cavity.ring_cavity_coupling),
             name="frf_visco",
         )
 
-    def _cavity_coupling(self, fet: FETModel, state: StaticState) -> cavity_model.CavityCoupling | None:
+    def _cavity_coupling(self, fet: FETModel, state: StaticState) -> shared_cavity.CavityCoupling | None:
         """The air cavity of a tire file whose ``[cavity]`` is enabled (else None: the paper's model)."""
         air = self.spec.cavity
         if not air.enabled:
             return None
-        cav = cavity_model.ring_tire_cavity(self.spec, air.temperature)
-        return cavity_model.ring_cavity_coupling(fet, state, cav, n_modes=air.modes, damping_ratio=air.damping_ratio)
+        cav = cavity.ring_tire_cavity(self.spec, air.temperature)
+        return cavity.ring_cavity_coupling(fet, state, cav, n_modes=air.modes, damping_ratio=air.damping_ratio)
 
     def released_hub(
         self, case: LoadCase, freqs: np.ndarray, mass: float, stiffness: float, damping: float
     ) -> tuple[np.ndarray, np.ndarray]:
-        """:func:`roadnoise_utils.response.fe_reference.fe_moving_hub`: the FE tire with its hub DOF free."""
+        """:func:`roadnoise_utils.tire.ring.fe_reference.fe_moving_hub`: the FE tire with its hub DOF free."""
         return fe_reference.fe_moving_hub(self.build_fet(), self.load(case), freqs, mass, stiffness, damping)
 
-    def air_cavity(self, temperature: float | None = None) -> cavity_model.Cavity:
-        """:func:`roadnoise_utils.tire.cavity.ring_tire_cavity`: from the rim to the belt's inner surface."""
-        return cavity_model.ring_tire_cavity(self.spec, temperature)
+    def air_cavity(self, temperature: float | None = None) -> shared_cavity.Cavity:
+        """:func:`roadnoise_utils.tire.ring.cavity.ring_tire_cavity`: from the rim to the belt's inner surface."""
+        return cavity.ring_tire_cavity(self.spec, temperature)
 
     def loaded_cavity_areas(
         self, loads: tuple[float, ...], temperature: float | None = None
     ) -> tuple[list[StaticState], np.ndarray]:
-        """The cached loaded states and :func:`roadnoise_utils.tire.cavity.loaded_area` of each (at the belt nodes)."""
+        """The cached loaded states and :func:`roadnoise_utils.tire.ring.cavity.loaded_area` of each (at the belt nodes)."""
         cav = self.air_cavity(temperature)
         states = [self.load(self.case("flat", load)) for load in loads]
-        return states, np.array([cavity_model.loaded_area(cav, state) for state in states])
+        return states, np.array([cavity.loaded_area(cav, state) for state in states])
 
     def rolling_cavity_frfs(self, case: LoadCase, freqs: np.ndarray, flow_speed: float) -> FRFResult:
-        """:func:`roadnoise_utils.response.frf.frf_visco` with the loaded cavity's coupling
-        (:func:`~roadnoise_utils.tire.cavity.ring_cavity_coupling`) streaming at ``flow_speed`` (m/s;
+        """:func:`roadnoise_utils.tire.ring.frf.frf_visco` with the loaded cavity's coupling
+        (:func:`~roadnoise_utils.tire.ring.cavity.ring_cavity_coupling`) streaming at ``flow_speed`` (m/s;
         :func:`~roadnoise_utils.tire.cavity.rolling_coupling`)."""
         air, state, fet = self.spec.cavity, self.load(case), self.build_fet()
         cav = self.air_cavity()
-        coupling = cavity_model.ring_cavity_coupling(
-            fet, state, cav, n_modes=air.modes, damping_ratio=air.damping_ratio
-        )
-        rolling = cavity_model.rolling_coupling(coupling, cav, flow_speed)
+        coupling = cavity.ring_cavity_coupling(fet, state, cav, n_modes=air.modes, damping_ratio=air.damping_ratio)
+        rolling = shared_cavity.rolling_coupling(coupling, cav, flow_speed)
         return frf.frf_visco(fet, state, np.asarray(freqs, dtype=float), progress=False, cavity=rolling)
 
     def loaded_modes(self, case: LoadCase, n_modes: int = 60, reference_frequency: float = 70.0) -> LoadedModes:
-        """Cached :func:`roadnoise_utils.response.modes.loaded_modes` (without the cavity)."""
+        """Cached :func:`roadnoise_utils.tire.ring.modes.loaded_modes` (without the cavity)."""
         self._no_cavity("loaded_modes")
         options = {"n_modes": int(n_modes), "reference_frequency": float(reference_frequency)}
         state = self.load(case)
@@ -179,24 +178,24 @@ class RingModel(TireModel):
         )
 
     def modal_reduction(self, case: LoadCase, **options: Any) -> ModalReduction:
-        """Cached :func:`roadnoise_utils.response.modal_reduction.modal_reduction` on the default direct sweep."""
+        """Cached :func:`roadnoise_utils.tire.ring.modal_reduction.modal_reduction` on the default direct sweep."""
         self._no_cavity("modal_reduction")
         state = self.load(case)
         visco = self.fixed_hub_frfs(case, DEFAULT_FREQS)
 
         def compute() -> ModalReduction:
-            return modal.modal_reduction(self.build_fet(), state, visco=visco, **options)
+            return modal_reduction.modal_reduction(self.build_fet(), state, visco=visco, **options)
 
         return cached(
             RingModel.modal_reduction,
             {**self._inputs(case), **options},
             compute,
-            runs=(modal.modal_reduction, frf.frf_visco, static.solve_static),
+            runs=(modal_reduction.modal_reduction, frf.frf_visco, static.solve_static),
             name="modal_reduction",
         )
 
     def direct_cleat_response(self, case: LoadCase, cleat: dict[str, Any]) -> tuple[RoadInput, np.ndarray]:
-        """Cached :func:`roadnoise_utils.response.fe_reference.fe_cleat_response` (``cleat``: speed,
+        """Cached :func:`roadnoise_utils.tire.ring.fe_reference.fe_cleat_response` (``cleat``: speed,
         height, base, shape, distance, duration, band)."""
         self._no_cavity("fe_cleat_response")
         state = self.load(case)
@@ -229,9 +228,9 @@ class RingModel(TireModel):
         return ContactSetup(refined, conditions.distance, conditions.quasi_static_step, None, None)
 
     def frozen_reference(
-        self, case: LoadCase, run: one_sided.ContactRun, cleat: tuple[float, float, str], duration: float
+        self, case: LoadCase, run: ContactRun, cleat: tuple[float, float, str], duration: float
     ) -> tuple[np.ndarray, np.ndarray]:
-        """:func:`roadnoise_utils.response.fe_reference.fe_point_response` of the hat-averaged cleat
+        """:func:`roadnoise_utils.tire.ring.fe_reference.fe_point_response` of the hat-averaged cleat
         heights under every contact node (the footprint sliding freely, as the frictionless contact)."""
         state = self.load(case)
         t = state.tasselli
@@ -240,15 +239,15 @@ class RingModel(TireModel):
             self.build_fet(), state, heights, run.dt, duration=duration, stick=False
         )
         n_fft = max(run.t.size, int(round(duration / run.dt)))
-        return fe_reference.band_limited(run.hub_force, run.dt, n_fft=n_fft), reference
+        return band_limit.band_limited(run.hub_force, run.dt, n_fft=n_fft), reference
 
-    def one_sided_run(self, case: LoadCase, cleat: dict[str, Any]) -> one_sided.ContactRun:
+    def one_sided_run(self, case: LoadCase, cleat: dict[str, Any]) -> ContactRun:
         """Cached cleat passage with one-sided contact on the drum of ``case``: quasi-static for
         ``speed = 0``, else dynamic (``cleat``: speed, height, base, shape, distance, frozen, step, dt)."""
         self._no_cavity("one_sided_run")
         state = self.load(case)
 
-        def compute() -> one_sided.ContactRun:
+        def compute() -> ContactRun:
             fet = self.build_fet()
             profile = cleat_profile(cleat["height"], cleat["base"], cleat["shape"])
             if cleat["speed"] == 0:
@@ -267,7 +266,7 @@ def check_cleat_height(static: StaticState, height: float) -> None:
     """Refuse a cleat the tire cannot envelop; warn when it is taller than the static deflection.
 
     Over the cleat the tire deflects by its static deflection plus the cleat height; past
-    :data:`~roadnoise_utils.tire.static.DEFLECTION_LIMIT` of the section height it would
+    :data:`~roadnoise_utils.tire.ring.static.DEFLECTION_LIMIT` of the section height it would
     bottom on the rim, which the model does not know.
     """
     g = static.tire.geometry
