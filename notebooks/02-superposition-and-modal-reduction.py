@@ -105,10 +105,13 @@ assert superposition_error < 1e-9
 # %%
 # NBVAL_CHECK_OUTPUT
 # Footprint sticking vs sliding longitudinally: difference of H_tot per band
-fet = ru.build_fet(tire)
-sliding = ru.frf_visco(fet, static, visco.freqs[visco.freqs <= 300], progress=False, stick=False)
-slide_errors = ru.analysis.band_errors(sliding.freqs, visco.H_tot[visco.freqs <= 300], sliding.H_tot)
-print(slide_errors.to_string(float_format=lambda v: f"{v:.2e}"))
+if ru.tire_model(tire).kind == "ring":  # the ring's tread shear springs hold its footprint
+    fet = ru.build_fet(tire)
+    sliding = ru.frf_visco(fet, static, visco.freqs[visco.freqs <= 300], progress=False, stick=False)
+    slide_errors = ru.analysis.band_errors(sliding.freqs, visco.H_tot[visco.freqs <= 300], sliding.H_tot)
+    print(slide_errors.to_string(float_format=lambda v: f"{v:.2e}"))
+else:
+    print(f"{tire.name}: not applicable: the footprint's stick/slide comparison (the ring's tread shear springs)")
 
 # %% [markdown]
 # Below 0.5 % in every band: the paper's assumption holds for our tire too.
@@ -123,19 +126,22 @@ print(slide_errors.to_string(float_format=lambda v: f"{v:.2e}"))
 
 # %%
 # Identification of the principal vertical modes (cached with the modal reduction)
-reduced = ru.stages.modal_reduction(tire, **surface)
-ident = reduced.identification
-ru.figures.superposition.plot_identification(visco, ident)
-plt.show()
+has_reduction = ru.experiments.applicable(tire, "modal_reduction")
+if has_reduction:
+    reduced = ru.stages.modal_reduction(tire, **surface)
+    ident = reduced.identification
+    ru.figures.superposition.plot_identification(visco, ident)
+    plt.show()
 
 # %%
 # NBVAL_CHECK_OUTPUT
 # Identified modes: frequency, damping ratio (fit and half-power), participation in H_tot(0)
-table = ident.table(total_static=visco.H_tot[0])
-print(table.to_string(float_format=lambda v: f"{v:.4f}"))
-print(f"relative RMS error of the fit over 0-{f_band:.0f} Hz: {ident.rms_error:.3f}")
-assert np.all(ident.damping > 0)
-assert np.nanmax(np.abs(ident.damping / ident.damping_half_power - 1)) < 0.2  # two methods agree
+if has_reduction:
+    table = ident.table(total_static=visco.H_tot[0])
+    print(table.to_string(float_format=lambda v: f"{v:.4f}"))
+    print(f"relative RMS error of the fit over 0-{f_band:.0f} Hz: {ident.rms_error:.3f}")
+    assert np.all(ident.damping > 0)
+    assert np.nanmax(np.abs(ident.damping / ident.damping_half_power - 1)) < 0.2  # two methods agree
 
 # %% [markdown]
 # Five vertical modes in 0-250 Hz, fitted to within 2 % (one constant loss factor per mode
@@ -148,10 +154,11 @@ assert np.nanmax(np.abs(ident.damping / ident.damping_half_power - 1)) < 0.2  # 
 # %%
 # NBVAL_CHECK_OUTPUT
 # The freezing frequency, chosen from H_tot (the paper: ~70 Hz)
-print(
-    f"most relevant vertical mode: {reduced.reference_frequency:.1f} Hz "
-    f"(static share {ident.static_share.max() / 1e3:.1f} N/mm of {visco.H_tot[0].real / 1e3:.1f} N/mm)"
-)
+if has_reduction:
+    print(
+        f"most relevant vertical mode: {reduced.reference_frequency:.1f} Hz "
+        f"(static share {ident.static_share.max() / 1e3:.1f} N/mm of {visco.H_tot[0].real / 1e3:.1f} N/mm)"
+    )
 
 # %% [markdown]
 # ## 4. Modal reduction (steps 2-3)
@@ -180,21 +187,23 @@ print(
 
 # %%
 # The three modal models (cached)
-variants = {
-    "paper: storage moduli + identified damping": ru.stages.modal_reduction(
-        tire, **surface, frozen="storage", damping="identified"
-    ),
-    "frozen complex + identified damping (default)": reduced,
-    "frozen complex, own damping": ru.stages.modal_reduction(tire, **surface, frozen="complex", damping="model"),
-}
-modal_frfs = {name: v.frf for name, v in variants.items()}
+if has_reduction:
+    variants = {
+        "paper: storage moduli + identified damping": ru.stages.modal_reduction(
+            tire, **surface, frozen="storage", damping="identified"
+        ),
+        "frozen complex + identified damping (default)": reduced,
+        "frozen complex, own damping": ru.stages.modal_reduction(tire, **surface, frozen="complex", damping="model"),
+    }
+    modal_frfs = {name: v.frf for name, v in variants.items()}
 
 # %%
 # NBVAL_CHECK_OUTPUT
 # The reduced model's modes (default variant): frozen-model and identified damping side by side
-modes_table = reduced.mode_table()
-print(modes_table.head(8).to_string(float_format=lambda v: f"{v:.4f}"))
-print(f"... {len(modes_table)} modes up to {reduced.model.freqs.max():.0f} Hz")
+if has_reduction:
+    modes_table = reduced.mode_table()
+    print(modes_table.head(8).to_string(float_format=lambda v: f"{v:.4f}"))
+    print(f"... {len(modes_table)} modes up to {reduced.model.freqs.max():.0f} Hz")
 
 # %% [markdown]
 # The loss factors the frozen complex model gives its modes can be compared with those
@@ -203,14 +212,15 @@ print(f"... {len(modes_table)} modes up to {reduced.model.freqs.max():.0f} Hz")
 # %%
 # NBVAL_CHECK_OUTPUT
 # Identified loss factors vs the frozen complex model's own, for the identified modes
-own = variants["frozen complex, own damping"].model.loss_factor
-used = modes_table["damping from"] == "identified"
-comparison = modes_table.loc[used, ["frequency (Hz)"]].assign(
-    **{"eta identified": modes_table.loc[used, "loss factor used"], "eta frozen model": own[used.to_numpy()]}
-)
-comparison["ratio"] = comparison["eta identified"] / comparison["eta frozen model"]
-print(comparison.to_string(float_format=lambda v: f"{v:.4f}"))
-assert abs(comparison["ratio"].iloc[0] - 1) < 0.05 and np.all(np.diff(comparison["ratio"]) > 0)
+if has_reduction:
+    own = variants["frozen complex, own damping"].model.loss_factor
+    used = modes_table["damping from"] == "identified"
+    comparison = modes_table.loc[used, ["frequency (Hz)"]].assign(
+        **{"eta identified": modes_table.loc[used, "loss factor used"], "eta frozen model": own[used.to_numpy()]}
+    )
+    comparison["ratio"] = comparison["eta identified"] / comparison["eta frozen model"]
+    print(comparison.to_string(float_format=lambda v: f"{v:.4f}"))
+    assert abs(comparison["ratio"].iloc[0] - 1) < 0.05 and np.all(np.diff(comparison["ratio"]) > 0)
 
 # %% [markdown]
 # At the freezing frequency they agree (0.5 %); above it the identified loss factors are
@@ -223,8 +233,9 @@ assert abs(comparison["ratio"].iloc[0] - 1) < 0.05 and np.all(np.diff(comparison
 # %%
 # NBVAL_CHECK_OUTPUT
 # Approximation (a): frozen-model frequencies vs the resonances of FETvisco
-shift = ru.analysis.peak_comparison(visco.freqs, visco.H_tot, reduced.frf.H_tot, f_max=f_band + 10)
-print(shift.to_string(float_format=lambda v: f"{v:.3f}"))
+if has_reduction:
+    shift = ru.analysis.peak_comparison(visco.freqs, visco.H_tot, reduced.frf.H_tot, f_max=f_band + 10)
+    print(shift.to_string(float_format=lambda v: f"{v:.3f}"))
 
 # %% [markdown]
 # Below the freezing frequency the frozen model is too stiff, above it too soft: the shift
@@ -235,22 +246,22 @@ print(shift.to_string(float_format=lambda v: f"{v:.3f}"))
 # ## 5. Fig. 5: the sum of the local FRFs against the whole-footprint FRF
 
 # %%
-# Fig. 5 analogue: |H_tot| of FETvisco vs |sum_i H_i| of the modal models, 0-300 Hz
+# Fig. 5 analogue: |H_tot| of FETvisco vs |sum_i H_i| of the modal models (or of the direct H_i), 0-300 Hz
 f_frozen = ru.claims.paper_value("freezing_frequency")  # data/paper/claims.toml
-ax = ru.figures.superposition.plot_superposition(
-    visco, modal_frfs, f_max=300, paper={"paper: freezing frequency": f_frozen}
-)
+sums = modal_frfs if has_reduction else {"sum of the direct H_i": visco}
+ax = ru.figures.superposition.plot_superposition(visco, sums, f_max=300, paper={"paper: freezing frequency": f_frozen})
 ax.set_title("Fig. 5 analogue: whole footprint (SISO) vs sum of the tasselli (MIMO)")
 plt.show()
 
 # %%
 # NBVAL_CHECK_OUTPUT
 # Relative error of sum_i H_i (modal) against H_tot (FETvisco) per band
-bands = ((0.0, 100.0), (100.0, 150.0), (150.0, 250.0))
-for name, frf in modal_frfs.items():
-    errors = ru.analysis.band_errors(visco.freqs, visco.H_tot, frf.H_sum, bands)
-    print(name)
-    print(errors.to_string(float_format=lambda v: f"{v:.3f}"))
+if has_reduction:
+    bands = ((0.0, 100.0), (100.0, 150.0), (150.0, 250.0))
+    for name, frf in modal_frfs.items():
+        errors = ru.analysis.band_errors(visco.freqs, visco.H_tot, frf.H_sum, bands)
+        print(name)
+        print(errors.to_string(float_format=lambda v: f"{v:.3f}"))
 
 # %% [markdown]
 # All three reproduce the paper's finding: the match is close in 0-100 Hz and degrades with
@@ -266,20 +277,22 @@ for name, frf in modal_frfs.items():
 # %%
 # NBVAL_CHECK_OUTPUT
 # Worst tassello: relative error of the modal H_i at the freezing frequency and at 0 Hz
-k_ref = int(np.argmin(np.abs(visco.freqs - reduced.reference_frequency)))
-for name, frf in modal_frfs.items():
-    err_ref = np.abs(frf.H[:, k_ref] - visco.H[:, k_ref]) / np.abs(visco.H[:, k_ref])
-    err_0 = np.abs(frf.H[:, 0] - visco.H[:, 0]) / np.abs(visco.H[:, 0])
-    print(
-        f"{name:45s} at {visco.freqs[k_ref]:.0f} Hz: max {err_ref.max():6.1%}, median {np.median(err_ref):5.1%};"
-        f" at 0 Hz: max {ru.analysis.format_small(err_0.max())}"
-    )
+if has_reduction:
+    k_ref = int(np.argmin(np.abs(visco.freqs - reduced.reference_frequency)))
+    for name, frf in modal_frfs.items():
+        err_ref = np.abs(frf.H[:, k_ref] - visco.H[:, k_ref]) / np.abs(visco.H[:, k_ref])
+        err_0 = np.abs(frf.H[:, 0] - visco.H[:, 0]) / np.abs(visco.H[:, 0])
+        print(
+            f"{name:45s} at {visco.freqs[k_ref]:.0f} Hz: max {err_ref.max():6.1%}, median {np.median(err_ref):5.1%};"
+            f" at 0 Hz: max {ru.analysis.format_small(err_0.max())}"
+        )
 
 # %%
 # The default model holds every tassello within 5 % at the freezing frequency and 0.5 % at 0 Hz
-frf = reduced.frf
-assert np.all(np.abs(frf.H[:, k_ref] - visco.H[:, k_ref]) <= 0.05 * np.abs(visco.H[:, k_ref]))
-assert np.all(np.abs(frf.H[:, 0] - visco.H[:, 0]) <= 0.005 * np.abs(visco.H[:, 0]))
+if has_reduction:
+    frf = reduced.frf
+    assert np.all(np.abs(frf.H[:, k_ref] - visco.H[:, k_ref]) <= 0.05 * np.abs(visco.H[:, k_ref]))
+    assert np.all(np.abs(frf.H[:, 0] - visco.H[:, 0]) <= 0.005 * np.abs(visco.H[:, 0]))
 
 # %% [markdown]
 # The paper's model (real modes + identified diagonal damping) sums correctly but misses some
@@ -311,15 +324,18 @@ plt.show()
 
 # %%
 # G_H, direct and modal
-ru.figures.superposition.plot_hub_frf({"G_H, FETvisco (direct)": visco, "G_H, modal (default)": reduced.frf})
+ru.figures.superposition.plot_hub_frf(
+    {"G_H, FETvisco (direct)": visco, **({"G_H, modal (default)": reduced.frf} if has_reduction else {})}
+)
 plt.show()
 
 # %%
 # NBVAL_CHECK_OUTPUT
 # G_H(0) against the static vertical stiffness of the loaded tire
 print(
-    f"G_H(0) direct {visco.G_H[0].real / 1e3:.2f} N/mm, modal {reduced.frf.G_H[0].real / 1e3:.2f} N/mm, "
-    f"static tangent stiffness {static.vertical_stiffness / 1e3:.2f} N/mm"
+    f"G_H(0) direct {visco.G_H[0].real / 1e3:.2f} N/mm, "
+    + (f"modal {reduced.frf.G_H[0].real / 1e3:.2f} N/mm, " if has_reduction else "")
+    + f"static tangent stiffness {static.vertical_stiffness / 1e3:.2f} N/mm"
 )
 print(
     f"|G_H(0)| / K_v - 1 = {abs(visco.G_H[0]) / static.vertical_stiffness - 1:+.2e} "
@@ -328,136 +344,8 @@ print(
 assert abs(abs(visco.G_H[0]) / static.vertical_stiffness - 1) < 0.01
 
 # %% [markdown]
-# ## 8. The same procedure on the tire built from its cross-section
-#
-# The cross-section tire (notebook 09) is a waveguide: every circumferential harmonic is its
-# own small problem, and only the footprint, whose points follow the road, couples them. Its
-# loaded modes — the paper's FET70Hz eigenmodes, rim fixed and footprint held — come from a
-# component-mode synthesis (MacNeal 1971; Craig & Kurdila, *Fundamentals of Structural
-# Dynamics*, ch. 19), `ru.tire.cross_section.modal`:
-#
-# 1. the **free modes** of every harmonic (rim fixed, tread free) at the frozen moduli, up to
-#    `ru.tire.cross_section.modal.FREE_FACTOR` times twice the band: eigenvalues $\Lambda$, vertical shapes at the contact
-#    points $\Psi$ (fore-aft even), vertical momentum $L$;
-# 2. the **residual flexibility** of all the rest at the contact points,
-#    $R = S(0) - \Psi\Lambda^{-1}\Psi^T$;
-# 3. the footprint **held** by point forces: $(K_L - \omega^2)\,q = \Psi^T R^{-1} d$ with
-#    $K_L = \Lambda + \Psi^T R^{-1}\Psi$, whose eigenpairs are the loaded modes;
-# 4. the **hub force** from the tire's vertical momentum balance,
-#    $F_H = \sum Q + \omega^2 L^T q$.
-#
-# The result has the ring model's form (mode-acceleration, quasi-static anchors with the moduli
-# at each frequency), so steps 1-3 of Fig. 4 run unchanged. First the synthesis itself: the
-# frozen model by the synthesis against the same frozen model solved directly (the footprint
-# solve with every compound law frozen).
-
-# %%
-# NBVAL_IGNORE_OUTPUT
-# The cross-section tire: direct FRFs, the modal reductions (cached), the frozen model both ways
-section_name = "165_65R14_cross_section"
-section_visco = ru.stages.frf_visco(section_name)
-section_variants = {
-    "paper: storage moduli + identified damping": ru.stages.modal_reduction(
-        section_name, frozen="storage", damping="identified"
-    ),
-    "frozen complex + identified damping (default)": ru.stages.modal_reduction(section_name),
-}
-section_reduced = section_variants["frozen complex + identified damping (default)"]
-check_freqs = np.arange(0.0, 251.0, 10.0)
-f_ref = section_reduced.reference_frequency
-check = ru.section_stages.frozen_check(section_name, f_ref, check_freqs)
-synthesis, frozen_direct = check.synthesis, check.direct
-
-# %%
-# NBVAL_CHECK_OUTPUT
-# The synthesis against the frozen model solved directly, 0-250 Hz every 10 Hz
-points_error = np.abs(synthesis.H_points - frozen_direct.hub.T).max() / np.abs(frozen_direct.hub).max()
-print(f"frozen at {f_ref:.1f} Hz; {synthesis.method}")
-print(f"H_tot: relative RMS difference {ru.analysis.relative_rms_error(synthesis.H_tot, frozen_direct.H_tot):.1e}")
-print(f"G_H:   relative RMS difference {ru.analysis.relative_rms_error(synthesis.G_H, frozen_direct.G_H):.1e}")
-print(f"contact points: largest difference {points_error:.1e} of the largest point FRF")
-
-# %% [markdown]
-# What remains (printed above) is the inertia of what the residual flexibility stands for,
-# growing as $(f/f_{free})^2$; the tests bound it (`tests/response/test_section_modal.py`), and
-# notebook 10 takes the free modes to 2 kHz for the 400 Hz band.
-#
-# Now the paper's procedure on this tire, against its direct viscoelastic FRFs:
-
-# %%
-# NBVAL_CHECK_OUTPUT
-# Cross-section tire: identified modes, freezing frequency, the loaded modes
-section_ident = section_reduced.identification
-print(section_ident.table(total_static=section_visco.H_tot[0]).to_string(float_format=lambda v: f"{v:.4f}"))
-print(f"most relevant vertical mode: {section_reduced.reference_frequency:.1f} Hz")
-section_modes = section_reduced.mode_table()
-share = section_modes["static share (N/mm)"]
-shown_modes = section_modes.assign(**{"static share (N/mm)": share.where(share.abs() > 1e-9, 0.0)})  # round-off -> 0
-print(shown_modes.head(12).to_string(float_format=lambda v: f"{v:.4g}"))
-print(f"... {len(section_modes)} loaded modes up to {section_reduced.model.freqs.max():.0f} Hz")
-
-# %% [markdown]
-# $H_{tot}$ of this tire has one strong resonance, the only one above twice its static value
-# (the identification's threshold): its higher vertical modes (the loaded modes with a static
-# share, harmonics 2-6 in the table) nearly cancel in the sum over the footprint and leave
-# ripples, while every tassello sees them (notebook 03). The loaded modes without static share are those the
-# symmetric road cannot drive (their hub and road gains cancel).
-#
-# Fig. 5 on both tire models:
-
-# %%
-# Fig. 5 analogue on both tire models: |H_tot| (direct) vs |sum_i H_i| of the modal models
-fig, axes = plt.subplots(1, 2, figsize=(14, 4.5))
-ru.figures.superposition.plot_superposition(
-    visco, modal_frfs, f_max=300, ax=axes[0], paper={"paper: freezing frequency": f_frozen}
-)
-axes[0].set_title(f"ring model ({tire_name})")
-ru.figures.superposition.plot_superposition(
-    section_visco, {k: v.frf for k, v in section_variants.items()}, f_max=300, ax=axes[1],
-    paper={"paper: freezing frequency": f_frozen},
-)  # fmt: skip
-axes[1].set_title("cross-section model (165_65R14_cross_section)")
-plt.show()
-
-# %%
-# NBVAL_CHECK_OUTPUT
-# Cross-section tire: relative error of sum_i H_i (modal) against H_tot (direct) per band
-for name, variant in section_variants.items():
-    errors = ru.analysis.band_errors(section_visco.freqs, section_visco.H_tot, variant.frf.H_sum, bands)
-    print(name)
-    print(errors.to_string(float_format=lambda v: f"{v:.3f}"))
-k_peak = int(np.argmax(np.abs(section_visco.H_tot[:251])))
-phases = {name: np.angle(v.frf.H_tot[k_peak], deg=True) for name, v in section_variants.items()}
-print(
-    f"phase of H_tot at {section_visco.freqs[k_peak]:.0f} Hz: direct {np.angle(section_visco.H_tot[k_peak], deg=True):.1f} deg, "
-    + ", ".join(f"{name.split(':')[0].split(' +')[0]} {p:.1f} deg" for name, p in phases.items())
-)
-
-# %% [markdown]
-# The complex-frozen model follows this tire as closely as the ring below 100 Hz. The paper's
-# procedure as written does not: freezing only the storage moduli takes the rubber loss out of
-# the loaded modes' gains and out of the footprint's residual flexibility — on this tire the
-# road reaches the modes through the tread rubber itself — so the resonance comes out with too
-# much phase lag (printed above). The moduli are right (the "modulus median" column); the
-# complex error is the phase. With the complex moduli frozen and the same identified damping
-# the error drops to the ring's level: the missing loss, not the identification, is the
-# mechanism.
-#
-# Approximation (a) on this tire, on the resonances the tasselli see (the RMS of their FRFs):
-
-# %%
-# NBVAL_CHECK_OUTPUT
-# Approximation (a), cross-section tire: resonances seen by the tasselli, direct vs modal
-section_shift = ru.analysis.peak_comparison(
-    section_visco.freqs, section_visco.H_rms, section_reduced.frf.H_rms, f_max=f_band + 10, min_ratio=1.0
-)
-print(section_shift.to_string(float_format=lambda v: f"{v:.3f}"))
-
-# %% [markdown]
-# The frozen cross-section tire underestimates its higher modes, increasingly with frequency
-# as the paper says, and by several times the ring's shift (section 4): in the ring most of the
-# stiffness is the inflation pressure, which does not depend on frequency; here the rubber's
-# share (tread, sidewall, belt compounds) is larger.
+# Notebook 13 runs the same procedure on the tire built from its cross-section, whose loaded
+# modes come from a component-mode synthesis, and on a tire read from files, which has none.
 
 # %% [markdown]
 # ## Paper vs ours
@@ -490,6 +378,8 @@ from ipywidgets import IntSlider, interact
 
 
 def show_tassello(tassello=37):
+    if not has_reduction:
+        return
     frfs = {
         "FETvisco (direct)": visco,
         "paper: storage + identified": modal_frfs["paper: storage moduli + identified damping"],

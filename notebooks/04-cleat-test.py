@@ -40,7 +40,6 @@
 # %%
 import matplotlib.pyplot as plt
 import numpy as np
-import pandas as pd
 
 import roadnoise_utils as ru
 
@@ -68,7 +67,8 @@ cleat_base = None
 conditions = ru.experiments.cleat_conditions(
     height=cleat_height, base=cleat_base, dynamic_kmh=speed_kmh, quasi_static_kmh=quasi_static_kmh
 )
-test = ru.experiments.cleat_test(tire_name, conditions=conditions, fe_reference=True)
+fe_check = ru.experiments.applicable(tire_name, "direct_response")  # the FE check needs the FE model
+test = ru.experiments.cleat_test(tire_name, conditions=conditions, fe_reference=fe_check)
 tire, drum, tire_F = test.tire, test.static, test.system
 height, base = conditions.height, conditions.base
 speed_kmh, quasi_static_kmh = conditions.dynamic_kmh, conditions.quasi_static_kmh
@@ -205,13 +205,13 @@ plt.show()
 # Row influences, and the quasi-static force straight from them (no dynamics at all)
 print((rows.round(1) + 0.0).to_string(float_format=lambda v: f"{v:.1f}"))  # + 0.0: no "-0.0"
 direct_quasi = ru.experiments.cleat.quasi_static_force(static_influence, quasi_road)
-k_foundation = tire.tread.normal_stiffness_per_area * tire.geometry.belt_width
-beta = (k_foundation / (4 * tire.belt.bending_stiffness)) ** 0.25
 edge = rows["H(0) of the row (N/mm)"].iloc[[0, 1, -2, -1]].sum() / rows["H(0) of the row (N/mm)"].sum()
-print(
-    f"edge zone 1/beta = {1e3 / beta:.1f} mm (beta = (k_tread b / 4 EI)^(1/4) = {beta:.1f} /m); "
-    f"two outer rows each side: {edge:.0%} of K_v"
-)
+ring_tire = ru.tire_model(tire).kind == "ring"  # the beam on springs and its parameters are the ring's
+if ring_tire:
+    k_foundation = tire.tread.normal_stiffness_per_area * tire.geometry.belt_width
+    beta = (k_foundation / (4 * tire.belt.bending_stiffness)) ** 0.25
+    print(f"edge zone 1/beta = {1e3 / beta:.1f} mm (beta = (k_tread b / 4 EI)^(1/4) = {beta:.1f} /m); ", end="")
+print(f"two outer rows each side: {edge:.0%} of K_v")
 print(
     f"peak of sum_i H_i(0) u_i: {direct_quasi.max():.1f} N; simulated at {quasi_static_kmh} km/h: "
     f"{quasi.peak_force:.1f} N"
@@ -219,94 +219,28 @@ print(
 
 # %%
 # NBVAL_CHECK_OUTPUT
-# Sensitivity of the quasi-static peak to the tire's parameters (each row: one change, all else as calibrated)
-variants = {
-    "as calibrated": {},
-    "belt bending stiffness x 3": {"belt.bending_stiffness": 3 * tire.belt.bending_stiffness},
-    "tread 3 x stiffer": {"tread.normal_stiffness_per_area": 3 * tire.tread.normal_stiffness_per_area},
-    "sidewall rubber x 3 (radial)": {"foundation.radial_rubber": 3 * tire.foundation.radial_rubber},
-    "sidewalls 3 x stiffer at the edges": {"foundation.edge_factor": 3 * tire.foundation.edge_factor},
-}
-for name, change in variants.items():
-    spec = tire.replace(**change)
-    peak = ru.experiments.cleat.quasi_static_peak(spec, height, base, conditions.shape, conditions.drum_radius)
-    print(f"{name:36s} quasi-static peak {peak:6.0f} N")
+# Sensitivity of the quasi-static peak to the ring tire's parameters (each row: one change, all else as calibrated)
+if ring_tire:
+    variants = {
+        "as calibrated": {},
+        "belt bending stiffness x 3": {"belt.bending_stiffness": 3 * tire.belt.bending_stiffness},
+        "tread 3 x stiffer": {"tread.normal_stiffness_per_area": 3 * tire.tread.normal_stiffness_per_area},
+        "sidewall rubber x 3 (radial)": {"foundation.radial_rubber": 3 * tire.foundation.radial_rubber},
+        "sidewalls 3 x stiffer at the edges": {"foundation.edge_factor": 3 * tire.foundation.edge_factor},
+    }
+    for name, change in variants.items():
+        spec = tire.replace(**change)
+        peak = ru.experiments.cleat.quasi_static_peak(spec, height, base, conditions.shape, conditions.drum_radius)
+        print(f"{name:36s} quasi-static peak {peak:6.0f} N")
+else:
+    print(f"{tire.name}: not applicable: the ring's parameters (its belt, tread springs and sidewalls)")
 
 # %% [markdown]
 # Tripling any one of the stiffnesses that shape the footprint moves the peak by well under a
 # factor of two, and the stiff-tread variant would break the footprint calibration — none
 # reaches the paper's simulated 1200 N.
-#
-# ### 4b. The same test on the tire built from its cross-section
-#
-# Is it the ring? The cross-section tire of notebook 09 — layered solid elements from the bead
-# to the tread, no springs — runs the same chain: its drum footprint, its tasselli, direct FRFs
-# from the harmonic solve, fits, state space, the same two runs (`tire_name` of
-# `cleat_test` is all that changes: the tire file's `[tire] model` chooses the numerics).
-
-# %%
-# NBVAL_IGNORE_OUTPUT
-# The paper's cleat test on the cross-section 165/65 R14 (cached stages; the first run takes ~1 min)
-section_test = ru.experiments.cleat_test("165_65R14_cross_section", conditions=conditions, fe_reference=True)
-both = {"ring": test, "cross-section": section_test}
-
-# %%
-# Fig. 9 analogue on both tire models, with the paper's peaks
-fig, axes = plt.subplots(1, 2, figsize=(13, 4.5), sharey=True)
-for ax, (model, run) in zip(axes, both.items()):
-    ru.figures.cleat_test.plot_cleat_runs(
-        {f"base curve ({quasi_static_kmh} km/h)": run.quasi_static, f"{speed_kmh:.0f} km/h": run.dynamic},
-        ax=ax,
-        title=f"{model} tire: {run.system.nstates} states, {run.static.tasselli.n} tasselli",
-        paper=paper,
-    )
-plt.show()
-
-# %%
-# NBVAL_CHECK_OUTPUT
-# The cleat test on both tire models against the paper's simulation (1200 N, 1870 N)
-table = pd.concat({model: run.to_frame()["ours"] for model, run in both.items()}, axis=1)
-print(table.to_string(float_format=lambda v: f"{v:.3f}"))
-for model, run in both.items():
-    q, d = run.quasi_static.peak_force, run.dynamic.peak_force
-    print(
-        f"{model}: quasi-static {q / paper['paper: simulated quasi-static peak'] - 1:+.0%} of the paper's 1200 N, "
-        f"30 km/h {d / paper['paper: dynamic peak (≈ 2.2 x measured)'] - 1:+.0%} of its 1870 N; "
-        f"RM vs FE peak {run.fe_reference.peak_difference:+.2%}, RMS {run.fe_reference.rms_difference:.2%}"
-    )
-
-# %%
-# Row influences H(0) along the drum footprint: ring against cross-section
-fig, axes = plt.subplots(1, 2, figsize=(13, 3.8), sharey=True)
-section_rows = {}
-for ax, (model, run) in zip(axes, both.items()):
-    h0 = ru.stages.frf_visco(run.tire, road="drum", drum_radius=conditions.drum_radius).H[:, 0].real
-    section_rows[model] = ru.experiments.cleat.row_influence(run.static, h0)
-    ru.figures.cleat_test.plot_row_influence(section_rows[model], run.static, base, ax=ax)
-    ax.set_title(f"{model} tire: K_v = {h0.sum() / 1e3:.0f} N/mm on the drum")
-plt.show()
-
-# %%
-# NBVAL_CHECK_OUTPUT
-# The entry row, and the share of K_v in the two outer rows at each end
-for model, rows in section_rows.items():
-    h = rows["H(0) of the row (N/mm)"]
-    print(
-        f"{model:13s}: entry row {h.iloc[0]:5.1f} N/mm ({h.iloc[0] / h.sum():.0%} of K_v), "
-        f"two outer rows each end {h.iloc[[0, 1, -2, -1]].sum() / h.sum():.0%} of K_v, {len(h)} rows"
-    )
-
-# %% [markdown]
-# The tire built from its cross-section reproduces the *shape* of the paper's simulation — two
-# peaks, a decay led by the first vertical mode near 80 Hz — and the RM chain follows its FE
-# solve within the fit error, as on the ring. It does not reproduce the *size*: the peak is
-# about the entry row's $H(0)$ times the cleat's mean height over a row (~8 mm), so the
-# paper's 1200 N needs an entry row of ~150 N/mm — well over half of $K_v$ — where ours carries
-# the share printed above. Both of our tires spread a push at the footprint edge over the
-# neighbouring rows, the cross-section tire through its belt's bending and shear, the ring
-# through the same beam on springs. The cross-section tire rings more (its dynamic /
-# quasi-static ratio in the table above, against the paper's own 1870 / 1200 = 1.56). What the
-# linear models cannot do — lose contact next to the cleat — notebook 08 adds on the ring.
+# Notebook 13 runs the same test on the tire built from its cross-section — layered solid
+# elements, no springs — and on a tire read from files.
 #
 # ## 5. Second method: the RM chain against the full FE model
 #
@@ -317,27 +251,28 @@ for model, rows in section_rows.items():
 # to the RM model's 250 Hz the same way (zero phase).
 
 # %%
-# The FE frequency-domain response and the RM chain on the same road, band-limited to 250 Hz
-road, fe_force, rm_force = test.fe_reference.road, test.fe_reference.fe_force, test.fe_reference.rm_force
-
-# %%
 # RM chain vs FE model
-fig, ax = plt.subplots(figsize=(9, 4))
-ax.plot(road.distance, fe_force, "k", lw=2.5, label="FE model, frequency domain (direct H_i)")
-ax.plot(road.distance, rm_force, "--", color="tab:red", label="RM chain: fitted state space, time domain")
-ax.set_xlabel("distance travelled (m)")
-ax.set_ylabel("hub force, 0-250 Hz (N)")
-ax.legend()
-plt.show()
+# (the FE frequency-domain response and the RM chain on the same road, band-limited to 250 Hz)
+if ru.experiments.applicable(tire, "direct_response"):
+    road, fe_force, rm_force = test.fe_reference.road, test.fe_reference.fe_force, test.fe_reference.rm_force
+    fig, ax = plt.subplots(figsize=(9, 4))
+    ax.plot(road.distance, fe_force, "k", lw=2.5, label="FE model, frequency domain (direct H_i)")
+    ax.plot(road.distance, rm_force, "--", color="tab:red", label="RM chain: fitted state space, time domain")
+    ax.set_xlabel("distance travelled (m)")
+    ax.set_ylabel("hub force, 0-250 Hz (N)")
+    ax.set_title(f"{tire.name}: the RM chain against the FE model on the {speed_kmh:.0f} km/h passage")
+    ax.legend()
+    plt.show()
 
 # %%
 # NBVAL_CHECK_OUTPUT
 # Peak and RMS differences between the RM chain and the FE model
-peak_difference = test.fe_reference.peak_difference
-rms_difference = test.fe_reference.rms_difference
-print(f"peak: FE {fe_force.max():.1f} N, RM {rm_force.max():.1f} N, difference {peak_difference:+.2%}")
-print(f"RMS of the difference / RMS of the FE force: {rms_difference:.2%}")
-assert abs(peak_difference) < 0.02 and rms_difference < 0.02
+if ru.experiments.applicable(tire, "direct_response"):
+    peak_difference = test.fe_reference.peak_difference
+    rms_difference = test.fe_reference.rms_difference
+    print(f"peak: FE {fe_force.max():.1f} N, RM {rm_force.max():.1f} N, difference {peak_difference:+.2%}")
+    print(f"RMS of the difference / RMS of the FE force: {rms_difference:.2%}")
+    assert abs(peak_difference) < 0.02 and rms_difference < 0.02
 
 # %% [markdown]
 # The whole chain — tasselli, fits, realisation, discretisation, simulation — reproduces the

@@ -50,9 +50,10 @@ import roadnoise_utils as ru
 ru.set_style()
 
 # %% tags=["parameters"]
-# Parameters (papermill): vehicle (data/vehicles), speed (km/h), seed, duration (s), textures, band (Hz);
+# Parameters (papermill): vehicle (data/vehicles), tire (None: the vehicle file's), speed (km/h), seed, duration (s), textures, band (Hz);
 # None takes the paper's road test from data/conditions/road_test.toml
 vehicle_name = "midsize_195_65R15"
+tire_name = None  # a tire file name or path in place of the vehicle file's tire (any tire model)
 speed_kmh = None
 seed = None
 duration = None
@@ -112,7 +113,7 @@ for claim_id, band_ in fig10_bands.items():
 # %%
 # NBVAL_IGNORE_OUTPUT
 # The tire (cached stages) and the coupled corner model
-setup = ru.experiments.corner_setup(car)
+setup = ru.experiments.corner_setup(car, tire=tire_name)
 tire, static, fits, hub, corner_model = setup.tire, setup.static, setup.fits, setup.hub, setup.model
 
 # %%
@@ -225,7 +226,8 @@ plt.show()
 
 # %%
 # Fig. 14 analogue: hub acceleration 40-220 Hz, the four peaks matched with the tire's vertical modes
-identified = ru.stages.modal_reduction(tire).identification
+visco = ru.stages.frf_visco(tire)
+identified = ru.response.modal_reduction.identify_modes(visco.freqs, visco.H_tot)  # step 1 of Fig. 4 (notebook 02)
 in_band = (f_check >= 40) & (f_check <= 220)
 peaks, _ = ru.analysis.resonance_peaks(f_check[in_band], np.sqrt(predicted[shown]["a_hub"][in_band]), min_ratio=0.0)
 f3, p3 = spectra[shown]["a_hub"]
@@ -245,54 +247,6 @@ for k, fp in enumerate(peaks[:4]):
     j = int(np.argmin(np.abs(identified.freqs - fp)))
     print(f"peak {k + 1}: {fp:6.1f} Hz  <-> vertical tire mode {j + 1} at {identified.freqs[j]:6.1f} Hz (fixed hub)")
 assert len(peaks) >= 4
-
-# %% [markdown]
-# ### Fig. 14 on the tire built from its cross-section
-#
-# The same car on the 195/65 R15 built from its cross-section (notebook 09): its fixed-hub fits
-# and $G_H$ replace the ring tire's (`corner_setup(car, tire=...)`), and the hub acceleration on
-# the rough texture comes from the frequency-domain prediction checked above.
-
-# %%
-# NBVAL_IGNORE_OUTPUT
-# The corner on the cross-section tire (cached stages; its shoulder tasselli warn that no fit order reaches 1 %)
-section_setup = ru.experiments.corner_setup(car, tire="195_65R15_cross_section")
-section_predicted = section_setup.predicted(f_check, road_test.spectra()[shown], road_test.speed)
-section_visco = ru.stages.frf_visco(section_setup.tire)
-section_modes = ru.response.modal_reduction.identify_modes(section_visco.freqs, section_visco.H_tot)
-
-# %%
-# Fig. 14 analogue on both tire models: hub acceleration 40-220 Hz (frequency domain, 2D rough road)
-in_band = (f_check >= 40) & (f_check <= 220)
-by_model = {
-    f"ring tire ({tire.name})": predicted[shown]["a_hub"],
-    f"cross-section tire ({section_setup.tire.name})": section_predicted["a_hub"],
-}
-ax = ru.figures.quarter_car.plot_spectra(
-    f_check[in_band], {k: v[in_band] for k, v in by_model.items()}, "hub acceleration ASD ((m/s²)/√Hz)",
-    (40.0, 220.0), log=True,
-)  # fmt: skip
-ax.set_title(f"Fig. 14 analogue, both tire models: {speed_kmh:.0f} km/h, {shown} texture")
-plt.show()
-
-# %%
-# NBVAL_CHECK_OUTPUT
-# Peaks of the hub acceleration 40-220 Hz on each tire model, and the tire's identified vertical modes
-for name, psd in by_model.items():
-    found, _ = ru.analysis.resonance_peaks(f_check[in_band], np.sqrt(psd[in_band]), min_ratio=0.0)
-    print(f"{name}: peaks at " + ", ".join(f"{fp:.0f}" for fp in found) + " Hz")
-print("vertical modes in H_tot, ring tire: " + ", ".join(f"{fm:.0f}" for fm in identified.freqs) + " Hz")
-print("vertical modes in H_tot, cross-section tire: " + ", ".join(f"{fm:.0f}" for fm in section_modes.freqs) + " Hz")
-
-# %% [markdown]
-# The cross-section tire's $H_{tot}$ has one strong resonance — its higher vertical modes
-# nearly cancel when the whole footprint moves together and show there as ripples (notebook
-# 02, section 8) — yet the hub shows a row of peaks above it (printed above). The rolling road
-# does not move the footprint together: each row of tasselli sees the road later than the one
-# before, and those phase differences drive the modes the uniform push cancels. The tasselli's
-# own FRFs carry them (notebook 03), so the RM chain does too. They are broad: this tire's
-# rubber damps its modes several times more than the ring's (notebook 09). The claim
-# `fig14_modes` counts the peaks on each model.
 
 # %% [markdown]
 # ## 6. Speed

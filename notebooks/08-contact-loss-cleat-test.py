@@ -320,8 +320,8 @@ print(
 )
 
 # %% [markdown]
-# Contact loss lifts the cross-section tire's base curve far above its linear peak (notebook 04,
-# section 4b), to about the measured level, like the ring's: the peak is set by what the tread
+# Contact loss lifts the cross-section tire's base curve far above its linear peak (notebook 13,
+# section 4), to about the measured level, like the ring's: the peak is set by what the tread
 # lifting off the drum around the cleat hands over to it, not by the row influences of the
 # tied footprint. At 30 km/h the cross-section tire goes further than the ring: nearly the whole
 # footprint lifts off while the cleat is under the axle (the fewest points in contact, printed

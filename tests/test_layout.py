@@ -89,6 +89,7 @@ MODEL_IMPORTS = {
     "figures.fe_tire_model": {"ring"},  # notebook 01, the ring tire's chapter: its mesh, shapes and modes
     "figures.cross_section": {"cross_section"},  # notebook 09, the cross-section tire's chapter: its layers
     "experiments.cross_section": {"cross_section"},  # notebook 09's tables of its construction
+    "experiments.tire_models": {"frf_file"},  # notebook 13: any model written in the frf-file model's format
 }
 
 

@@ -11,8 +11,9 @@ experiment                     what it runs                                     
 :func:`calibration_table`      the tire against its calibration targets          01
 :func:`band_extension`         the chain at 0-250 and 0-400 Hz, cleat and road   10
 :func:`whole_car_run`          the whole car on a 3-D road, spectra, checks       11
-:func:`cavity.cavity_frfs`     the tire's FRFs with and without its air cavity    11
+:func:`cavity.cavity_frfs`     the tire's FRFs with and without its air cavity    14
 :func:`sweep`                  a grid or sample of tire designs on dask -> table  12
+:func:`tire_as_files`          any tire model written as a tire from files       13
 =============================  ================================================  ==========
 
 ``*_conditions`` functions resolve a test's defaults (an argument left at ``None`` is the
@@ -33,6 +34,7 @@ from . import (
     one_sided_cleat,
     paper_defaults,
     road,
+    tire_models,
     whole_car,
 )
 from .bands import BandExtension, BandModel, band_extension
@@ -51,6 +53,7 @@ from .one_sided_cleat import (
     speed_sweep,
 )
 from .road import RoadTest, RoadTestConditions, road_test, road_test_conditions
+from .tire_models import applicable, tire_as_files
 
 __all__ = [
     "BandExtension",
@@ -91,6 +94,9 @@ __all__ = [
     "road_test",
     "road_test_conditions",
     "whole_car",
+    "tire_models",
+    "tire_as_files",
+    "applicable",
     "speed_sweep",
     "SweepError",
     "design",

@@ -9,7 +9,7 @@ from matplotlib import patheffects
 from matplotlib.collections import LineCollection
 from matplotlib.patches import Circle, Rectangle
 
-from ..tire.model import FRFResult
+from ..tire.model import Footprint, FRFResult
 from ..tire.ring.mechanics import UX, UZ, FETModel
 from ..tire.ring.modes import LoadedModes
 from ..tire.ring.static import StaticState
@@ -92,16 +92,20 @@ def plot_loaded_shape(fet: FETModel, states: dict[str, StaticState], zoom: float
     return fig
 
 
-def plot_footprint(static: StaticState, ax: plt.Axes | None = None, numbers: str = "all") -> plt.Axes:
+def plot_footprint(
+    static: Footprint, ax: plt.Axes | None = None, numbers: str = "all", vmax: float | None = None
+) -> plt.Axes:
     """Fig. 2 analogue: contact pressure map with tassello outlines, centres (white dots) and numbers.
 
-    ``numbers``: ``"all"``, ``"some"`` (every 5th, as the paper's partial numbering) or ``"none"``.
+    ``numbers``: ``"all"``, ``"some"`` (every 5th, as the paper's partial numbering) or ``"none"``;
+    ``vmax``: top of the colour scale (MPa; default the map's largest pressure), one value for
+    maps drawn side by side.
     """
     if ax is None:
         _, ax = plt.subplots(figsize=(6, 5))
     t = static.tasselli
     p = static.node_pressure
-    vmax = p.max() / 1e6
+    vmax = p.max() / 1e6 if vmax is None else vmax
     for xs, ys, dxm, dxp, w, pv in zip(t.node_x, t.node_y, t.node_dx_minus, t.node_dx_plus, t.widths, p):
         ax.add_patch(
             Rectangle(

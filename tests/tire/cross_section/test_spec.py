@@ -79,7 +79,7 @@ def test_bad_construction_is_named(path, value, message):
 
 
 def test_each_model_refuses_the_other_models_file():
-    with pytest.raises(TypeError, match="cross-section tire"):
+    with pytest.raises(TypeError, match="model = 'cross-section'"):
         ru.build_fet(ru.load_tire(NAME))
     with pytest.raises(ValueError, match="is a 'ring' tire file"):
         section_stages.section_tire("165_65R14")
