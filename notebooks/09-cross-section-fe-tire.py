@@ -152,9 +152,8 @@ assert three_d_difference < 1e-10
 # stiffness; the lateral branch (the belt rocking on the sidewalls) runs beside it. The dashed line is the ring model's closed-form radial
 # branch (notebook 01), a tire with the same targets built from calibrated springs.
 #
-# Published measured frequencies for a similar tire could not be read on this machine (no
-# network; the abstracts we found give none): the comparison with a measurement is still
-# open.
+# No measured frequencies of a similar tire are in the repository: the comparison with a
+# measurement is still open.
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -172,13 +171,14 @@ plt.title("Free-tire dispersion: cross-section model and ring model")
 plt.show()
 
 # %% [markdown]
-# ## 5. The loaded tire: footprint, pressure map, tasselli (Fig. 2-3 analogues)
+# ## 5. The loaded tire: footprint and tasselli (Fig. 3 analogue)
 #
 # Loading adds one-sided, frictionless contact on the grid (active set on the vertical
 # compliance of 2175 candidate points, each a 3 mm arc). The model is linear about the inflated
 # state: it neglects the change of pre-stress and geometry over the ~22 mm deflection, friction
 # in the footprint and the tread's own nonlinearity. The hub force is computed apart, as the
-# rim's ``n = 1`` reaction: it balances the load to round-off.
+# rim's ``n = 1`` reaction: it balances the load to round-off. Notebook 13 draws its pressure
+# map and tasselli (Fig. 2) beside the other tire models', on one colour scale.
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -191,15 +191,6 @@ summary = pd.DataFrame({"cross-section, flat": section_summary(flat), "cross-sec
 summary["ring, flat"] = ru.tire.ring.static.static_summary({"ring": ring_flat})["ring"].reindex(summary.index)
 print(summary.to_string(float_format=lambda v: f"{v:.4g}"))
 assert max(force_balance(flat), force_balance(drum)) < 1e-9
-
-# %%
-# Fig. 2 analogue: pressure maps and tasselli, cross-section model (left) and ring model (right)
-fig, axes = plt.subplots(1, 2, figsize=(13, 5))
-ru.figures.fe_tire_model.plot_footprint(flat, axes[0], numbers="some")
-axes[0].set_title(f"cross-section model: {flat.tasselli.n} tasselli on a 3 x 4.4 mm grid")
-ru.figures.fe_tire_model.plot_footprint(ring_flat, axes[1], numbers="some")
-axes[1].set_title(f"ring model: {ring_flat.tasselli.n} tasselli on 9 strips x 5.7 mm")
-plt.show()
 
 # %%
 # Fig. 3 analogue: the loaded tire, 3-D (deformation x 2) and the cross-section at the footprint centre
