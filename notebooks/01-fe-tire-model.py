@@ -67,7 +67,7 @@ tire = ru.load_tire(tire_name)
 ring_tire = ru.tire_model(tire).kind == "ring"  # the mesh, statics and modes below are the ring's
 if not ring_tire:
     print(
-        f"{tire.name}: not applicable: the ring model's parameters, mesh, statics and modes (notebook 09: the cross-section's)"
+        f"{tire.name}: not applicable: the ring model's parameters, mesh, statics and modes (notebook 09 shows the cross-section model's)"
     )
 ru.tire.ring.spec.tire_table(tire) if ring_tire else None
 

@@ -253,7 +253,7 @@ else:
 # %%
 # RM chain vs FE model
 # (the FE frequency-domain response and the RM chain on the same road, band-limited to 250 Hz)
-if ru.experiments.applicable(tire, "direct_response"):
+if fe_check:
     road, fe_force, rm_force = test.fe_reference.road, test.fe_reference.fe_force, test.fe_reference.rm_force
     fig, ax = plt.subplots(figsize=(9, 4))
     ax.plot(road.distance, fe_force, "k", lw=2.5, label="FE model, frequency domain (direct H_i)")
@@ -267,7 +267,7 @@ if ru.experiments.applicable(tire, "direct_response"):
 # %%
 # NBVAL_CHECK_OUTPUT
 # Peak and RMS differences between the RM chain and the FE model
-if ru.experiments.applicable(tire, "direct_response"):
+if fe_check:
     peak_difference = test.fe_reference.peak_difference
     rms_difference = test.fe_reference.rms_difference
     print(f"peak: FE {fe_force.max():.1f} N, RM {rm_force.max():.1f} N, difference {peak_difference:+.2%}")

@@ -68,6 +68,7 @@ plt.show()
 # The tire's direct FRFs, the tasselli fits and the hub fit (cached stages); the check's suspension
 # (data/conditions/moving_hub_check.toml; the parameters above override it)
 tire = ru.load_tire(tire_name)
+ru.tire_model(tire).require("hub_transfer")  # the chapter is G_H's: a tire without it stops here, naming it
 static = ru.stages.solve_static(tire)
 visco = ru.stages.frf_visco(tire)
 fits = ru.stages.fit_tasselli(tire)

@@ -213,11 +213,11 @@ k100 = int(np.argmin(np.abs(visco.freqs - 100.0)))
 points = ru.experiments.applicable(tire, "fe_mesh")  # the contact points' FRFs come from the FE mesh
 for wavelength in (1.0, 0.5, 0.2, 0.1, 0.05, 0.03):
     gain = np.mean(np.abs(ru.road.kernel_transforms(static, [1.0 / wavelength])[centre]))
-    error = ru.road.tassellation_error(static, visco.H_points[:, k100], [wavelength])[0] if points else np.nan
-    print(
-        f"lambda = {wavelength * 100:5.1f} cm: {gain:5.1%} of the amplitude reaches a tassello; "
-        f"hub-force error of the tasselli {error:5.1%}"
-    )
+    line = f"lambda = {wavelength * 100:5.1f} cm: {gain:5.1%} of the amplitude reaches a tassello"
+    if points:
+        error = ru.road.tassellation_error(static, visco.H_points[:, k100], [wavelength])[0]
+        line += f"; hub-force error of the tasselli {error:5.1%}"
+    print(line)
 
 # %% [markdown]
 # For wavelengths of half a metre and more the tasselli are within 1 % of the point-resolved

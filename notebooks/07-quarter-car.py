@@ -113,7 +113,7 @@ for claim_id, band_ in fig10_bands.items():
 # %%
 # NBVAL_IGNORE_OUTPUT
 # The tire (cached stages) and the coupled corner model
-setup = ru.experiments.corner_setup(car, tire=tire_name)
+setup = ru.experiments.corner_setup(car, tire=tire_name)  # needs G_H (capability hub_transfer)
 tire, static, fits, hub, corner_model = setup.tire, setup.static, setup.fits, setup.hub, setup.model
 
 # %%

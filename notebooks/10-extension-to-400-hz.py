@@ -114,7 +114,7 @@ plt.show()
 #
 # The paper's procedure (Fig. 4) with the band at 400 Hz: identification over 0-400 Hz, the
 # moduli frozen at the most relevant vertical mode, loaded modes to at least 800 Hz (free modes
-# to 2 kHz; the synthesis in notebook 13, section 3).
+# to 2 kHz; the synthesis in notebook 09, section 7).
 
 # %%
 # NBVAL_CHECK_OUTPUT

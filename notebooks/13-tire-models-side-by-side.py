@@ -97,11 +97,12 @@ for label, f in footprints.items():
 # ## 3. Fig. 5 on every model: the sum of the local FRFs against the whole footprint
 #
 # The paper's procedure (Fig. 4) builds the local FRFs from a modal reduction of the loaded FE
-# tire; notebook 02 runs it on the ring. The cross-section tire's loaded modes come from a
+# tire; notebook 02 runs it on the ring. The cross-section tire builds its modal reduction by a
 # component-mode synthesis (MacNeal 1971; Craig & Kurdila, *Fundamentals of Structural
-# Dynamics*, ch. 19; `tire/cross_section/modal.py`): the free modes of every harmonic, the
-# residual flexibility of the rest at the contact points, the footprint held by point forces —
-# the result has the ring's form, so steps 1-3 of Fig. 4 run unchanged. A tire from files has
+# Dynamics*, ch. 19; notebook 09, section 7): the free modes of every harmonic, the residual
+# flexibility of the rest at the contact points, the footprint held by point forces — the
+# result has the ring's form, so steps 1-3 of Fig. 4 run unchanged (it has no separate solve of
+# the loaded eigenmodes, hence `loaded_modes` above). A tire from files has
 # FRFs and no FE model to reduce: its $\sum_i H_i$ is checked against its $H_{tot}$ directly.
 
 # %%
@@ -152,8 +153,9 @@ print(
 # moduli takes the rubber loss out of the loaded modes and out of the footprint's residual
 # flexibility — on this tire the road reaches the modes through the tread rubber itself — so
 # its resonance comes out with too much phase lag; with the complex moduli frozen and the same
-# identified damping the error drops to the ring's level. The frozen cross-section tire also
-# underestimates its higher modes by several times the ring's shift (notebook 02, section 4):
+# identified damping the error drops close to the ring's. The frozen cross-section tire also
+# underestimates its higher modes by several times the ring's shift (notebook 02, section 4;
+# notebook 09, section 7):
 # in the ring most of the stiffness is the inflation pressure, which does not depend on
 # frequency; here the rubber's share is larger.
 
@@ -224,15 +226,16 @@ for label, row in rows.items():
     )
 
 # %% [markdown]
-# Both FE tires reproduce the *shape* of the paper's simulation — two peaks, a decay led by the
-# first vertical mode near 80 Hz — and the RM chain follows each FE solve within the fit error.
+# Both FE tires reproduce the *shape* of the paper's simulation — two peaks, then a decay (led
+# by the first vertical mode, 82 Hz, on the cross-section tire; by its 107 Hz mode on the ring) — and the RM chain follows each FE solve within the fit error.
 # Neither reproduces the *size*: the peak is about the entry row's $H(0)$ times the cleat's mean
 # height over a row (~8 mm), so the paper's 1200 N needs an entry row of ~150 N/mm — well over
 # half of $K_v$ — where ours carry the shares printed above. Both spread a push at the footprint
 # edge over the neighbouring rows: the cross-section tire through its belt's bending and shear,
 # the ring through a beam on springs. The cross-section tire rings more (its dynamic /
 # quasi-static ratio, against the paper's 1870 / 1200 = 1.56). The tire from files gives the
-# cross-section's forces to round-off: the RM chain needs nothing but the files.
+# cross-section's forces to round-off: the RM chain needs nothing but the files. What the linear
+# models cannot do — lose contact next to the cleat — notebook 08 adds.
 #
 # ## 5. Fig. 14 on every model: the car's tire in the hub acceleration
 #
@@ -242,7 +245,7 @@ for label, row in rows.items():
 
 # %%
 # NBVAL_IGNORE_OUTPUT
-# The corner on every model of the car's tire (cached stages; the shoulder tasselli warn that no fit order reaches 1 %)
+# The corner on every model of the car's tire (cached stages; the cross-section's shoulder tasselli may warn that no fit order reaches 1 %)
 road_test = ru.experiments.road_test_conditions()
 shown = road_test.textures[0]  # the rough texture of the paper's test
 car = ru.vehicle.load_vehicle(f"midsize_{car_tire_size}")

@@ -32,8 +32,8 @@ from roadnoise_utils.experiments import whole_car
 ru.set_style()
 
 # %% tags=["parameters"]
-# Parameters (papermill): speed (km/h), texture, duration (s), seed of the car's road test;
-# None takes data/conditions/whole_car.toml (its [cavity] table: the tire, the loads, the speeds)
+# Parameters (papermill): speed (km/h), texture, duration (s), seed of the car's road test; None
+# takes data/conditions/whole_car.toml (its [cavity] table gives the tire, the loads and the speeds)
 speed_kmh = None
 texture = None
 duration = None
@@ -46,6 +46,7 @@ test = whole_car.whole_car_conditions(speed_kmh, texture, duration, seed)
 speed_kmh, texture, duration, seed = test.speed_kmh, test.texture, test.duration, test.seed
 setup = whole_car.whole_car_setup(test.car)
 
+# %% [markdown]
 # ## 1. The loaded cavity
 #
 # The air between the rim and the belt is a torus. Below its first cross-sectional mode (~1.3

@@ -1,4 +1,4 @@
-"""The tire's air cavity: its split under load, its rolling doublet and the fixed-hub FRFs with and without it (notebook 11).
+"""The tire's air cavity: its split under load, its rolling doublet and the fixed-hub FRFs with and without it (notebook 14).
 
 Reads the ``[cavity]`` table of ``data/conditions/whole_car.toml`` once
 (:func:`cavity_conditions`); the tire answers through the capabilities ``cavity`` and

@@ -1,4 +1,4 @@
-"""Figures of notebook 11-whole-car: the car's layout, corner and body spectra, the wheelbase filtering, the axles' coherence."""
+"""Figures of notebooks 11 (the whole car: layout, corner and body spectra, wheelbase filtering, the axles' coherence) and 14 (its air cavity)."""
 
 from __future__ import annotations
 

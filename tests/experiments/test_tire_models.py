@@ -67,9 +67,14 @@ def test_asking_again_keeps_the_files_and_a_variant_gets_its_own_folder(coarse_r
     assert tire_models.tire_as_files(stiffer).parent != folder
 
 
-def test_a_drum_case_needs_the_drum_radius(coarse_ring):
-    with pytest.raises(ValueError, match="drum_radius"):
-        tire_models.tire_as_files(coarse_ring, ("drum",))
+@pytest.mark.parametrize(
+    "roads, drum_radius, message",
+    [(("drum",), None, "drum_radius"), ((), None, "roads"), ("drum", 1.25, "roads"), (("flat", "flat"), None, "roads"),
+     (("flat", "wet"), None, "roads"), (("drum",), 0.1, "drum_radius")],
+)  # fmt: skip
+def test_bad_load_cases_are_refused_naming_the_parameter(coarse_ring, roads, drum_radius, message):
+    with pytest.raises(ValueError, match=message):
+        tire_models.tire_as_files(coarse_ring, roads, drum_radius)
 
 
 def test_applicable_says_which_capability_a_model_lacks(coarse_ring, ring_files, capsys):

@@ -10,7 +10,7 @@ from roadnoise_utils.tire.cross_section import modal as section_modal
 from roadnoise_utils.tire.cross_section import stages as section_stages
 
 TIRE = "165_65R14_cross_section"
-FREQS = np.arange(0.0, 251.0, 10.0)  # notebook 02's check
+FREQS = np.arange(0.0, 251.0, 10.0)  # notebook 09's check (section 7)
 
 
 @pytest.fixture(scope="module")
@@ -26,7 +26,7 @@ def _rel_rms(approx, ref, axis=-1):
 def test_the_synthesis_equals_the_frozen_model_solved_directly(name):
     """Loaded modes from free modes + residual flexibility vs the footprint solve with the laws
     frozen at the reference mode: only the residual's inertia differs (it grows as (f / f_free)^2).
-    The 165's inputs are notebook 02's (one cached computation for both)."""
+    The 165's inputs are notebook 09's (one cached computation for both)."""
     f_ref = stages.modal_reduction(TIRE).reference_frequency
     check = section_stages.frozen_check(name, f_ref, FREQS)
     reduced, direct = check.synthesis, check.direct
