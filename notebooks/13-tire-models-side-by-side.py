@@ -109,15 +109,14 @@ for label, f in footprints.items():
 # NBVAL_IGNORE_OUTPUT
 # Direct FRFs of every model and the paper's modal reduction where the model has one (cached stages)
 visco = {label: ru.stages.frf_visco(tire) for label, tire in tires.items()}
-variants = {}
-for label, tire in tires.items():
-    try:
-        variants[label] = {
-            "paper: storage moduli + identified damping": ru.stages.modal_reduction(tire, frozen="storage"),
-            "frozen complex + identified damping (default)": ru.stages.modal_reduction(tire),
-        }
-    except ru.NotApplicable as refused:
-        print(f"{label}: {refused}")
+variants = {
+    label: {
+        "paper: storage moduli + identified damping": ru.stages.modal_reduction(tire, frozen="storage"),
+        "frozen complex + identified damping (default)": ru.stages.modal_reduction(tire),
+    }
+    for label, tire in tires.items()
+    if ru.experiments.applicable(tire, "modal_reduction")
+}
 f_frozen = ru.claims.paper_value("freezing_frequency")  # data/paper/claims.toml
 
 # %%
@@ -256,15 +255,15 @@ setups = {label: ru.experiments.corner_setup(car, tire=tire) for label, tire in 
 by_model = {
     label: s.predicted(f_check, road_test.spectra()[shown], road_test.speed)["a_hub"] for label, s in setups.items()
 }
-modes = {label: ru.response.modal_reduction.identify_modes(f.freqs, f.H_tot) for label, f in
-         ((label, ru.stages.frf_visco(tire)) for label, tire in car_tires.items())}  # fmt: skip
+car_visco = {label: ru.stages.frf_visco(tire) for label, tire in car_tires.items()}
+modes = {label: ru.response.modal_reduction.identify_modes(f.freqs, f.H_tot) for label, f in car_visco.items()}
 
 # %%
 # Fig. 14 analogue on every model: hub acceleration 40-220 Hz (frequency domain, 2-D rough road)
 in_band = (f_check >= 40) & (f_check <= 220)
 ax = ru.figures.quarter_car.plot_spectra(
     f_check[in_band], {k: v[in_band] for k, v in by_model.items()}, "hub acceleration ASD ((m/s²)/√Hz)",
-    (40.0, 220.0), log=True,
+    (40.0, 220.0), log=True, styles=("-", "-", "--"),  # the files' curve dashed: it lies on the cross-section's
 )  # fmt: skip
 ax.set_title(f"Fig. 14 analogue, every model: {road_test.speed_kmh:.0f} km/h, {shown} texture")
 plt.show()
@@ -300,7 +299,9 @@ car_psd = whole_car.predicted_2d(car_setups, car_test.spectrum, car_test.speed_k
 
 # %%
 # Front hub and body heave on every model (frequency domain, 2-D road)
-fig = ru.figures.whole_car.plot_hub_and_heave(f_car, car_psd, ("tab:red", "tab:blue", "tab:green"), (0.0, 250.0))
+fig = ru.figures.whole_car.plot_hub_and_heave(
+    f_car, car_psd, ("tab:red", "tab:blue", "tab:green"), (0.0, 250.0), styles=("-", "-", "--")
+)
 fig.suptitle(f"every tire model under the whole car, {car_test.speed_kmh:.0f} km/h, 2-D {car_test.texture} road")
 plt.show()
 

@@ -83,13 +83,18 @@ def plot_spectra(
     ax: plt.Axes | None = None,
     log: bool = False,
     predicted: dict[str, tuple] | None = None,
+    styles: tuple[str, ...] | None = None,
 ) -> plt.Axes:
-    """Amplitude spectral densities (sqrt of PSD) of a few signals, optionally with predictions."""
+    """Amplitude spectral densities (sqrt of PSD) of a few signals, optionally with predictions.
+
+    ``styles``: a line style per curve (default solid), e.g. dashed for a curve that may lie on another.
+    """
     if ax is None:
         _, ax = plt.subplots(figsize=(8, 4))
-    for (label, psd), colour in zip(curves.items(), ["tab:red", "tab:blue", "tab:green"]):
+    styles = styles or ("-",) * len(curves)
+    for (label, psd), colour, style in zip(curves.items(), ["tab:red", "tab:blue", "tab:green"], styles):
         keep = (freqs >= f_range[0]) & (freqs <= f_range[1])
-        (ax.semilogy if log else ax.plot)(freqs[keep], np.sqrt(psd[keep]), color=colour, lw=1.2, label=label)
+        (ax.semilogy if log else ax.plot)(freqs[keep], np.sqrt(psd[keep]), color=colour, ls=style, lw=1.2, label=label)
         if predicted and label in predicted:
             fp, pp = predicted[label]
             k = (fp >= f_range[0]) & (fp <= f_range[1])

@@ -179,12 +179,16 @@ def plot_hub_and_heave(
     by_label: dict[str, dict[str, np.ndarray]],
     colours: tuple[str, ...],
     f_range: tuple[float, float],
+    styles: tuple[str, ...] | None = None,
 ) -> plt.Figure:
-    """Front-left hub and body heave ASDs of a few predicted cases (e.g. two tire models, cavity off and on)."""
+    """Front-left hub and body heave ASDs of a few predicted cases (e.g. two tire models, cavity off and on).
+
+    ``styles``: a line style per case (default solid), e.g. dashed for a case that may lie on another.
+    """
     fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4))
-    for (label, psd), colour in zip(by_label.items(), colours):
-        left.semilogy(freqs, np.sqrt(psd["a_hub_FL"]), color=colour, lw=1.0, label=label)
-        right.semilogy(freqs, np.sqrt(psd["a_heave"]), color=colour, lw=1.0, label=label)
+    for (label, psd), colour, style in zip(by_label.items(), colours, styles or ("-",) * len(by_label)):
+        left.semilogy(freqs, np.sqrt(psd["a_hub_FL"]), color=colour, ls=style, lw=1.0, label=label)
+        right.semilogy(freqs, np.sqrt(psd["a_heave"]), color=colour, ls=style, lw=1.0, label=label)
     left.set_ylabel("front-left hub ASD ((m/s²)/√Hz)")
     right.set_ylabel("heave ASD ((m/s²)/√Hz)")
     for ax in (left, right):
