@@ -147,9 +147,8 @@ if has_reduction:
 # Five vertical modes in 0-250 Hz, fitted to within 2 % (one constant loss factor per mode
 # cannot follow the rubber's frequency-dependent loss exactly); the two damping estimates agree
 # within 20 % (the half-power bandwidth is biased by the neighbouring modes and the residual).
-# The first
-# vertical mode carries a third of the static stiffness: it is "the most relevant vertical
-# mode", and we freeze the moduli at its frequency.
+# The first vertical mode carries a third of the static stiffness: it is "the most relevant
+# vertical mode", and we freeze the moduli at its frequency.
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -213,12 +212,7 @@ if has_reduction:
 # NBVAL_CHECK_OUTPUT
 # Identified loss factors vs the frozen complex model's own, for the identified modes
 if has_reduction:
-    own = variants["frozen complex, own damping"].model.loss_factor
-    used = modes_table["damping from"] == "identified"
-    comparison = modes_table.loc[used, ["frequency (Hz)"]].assign(
-        **{"eta identified": modes_table.loc[used, "loss factor used"], "eta frozen model": own[used.to_numpy()]}
-    )
-    comparison["ratio"] = comparison["eta identified"] / comparison["eta frozen model"]
+    comparison = reduced.damping_comparison()
     print(comparison.to_string(float_format=lambda v: f"{v:.4f}"))
     assert abs(comparison["ratio"].iloc[0] - 1) < 0.05 and np.all(np.diff(comparison["ratio"]) > 0)
 
@@ -241,7 +235,7 @@ if has_reduction:
 # Below the freezing frequency the frozen model is too stiff, above it too soft: the shift
 # turns negative and grows with frequency, as the paper says. It is small here (≤ 0.4 %)
 # because most of our tire's stiffness comes from the inflation pressure, which does not
-# depend on frequency; the peaks are sharp (η ≈ 1-4 %), so even that shift shows.
+# depend on frequency; the peaks are sharp (ζ ≈ 1-4 %), so even that shift shows.
 #
 # ## 5. Fig. 5: the sum of the local FRFs against the whole-footprint FRF
 
@@ -276,23 +270,15 @@ if has_reduction:
 
 # %%
 # NBVAL_CHECK_OUTPUT
-# Worst tassello: relative error of the modal H_i at the freezing frequency and at 0 Hz
+# Relative error of the modal H_i, tassello by tassello, at the freezing frequency and at 0 Hz
 if has_reduction:
-    k_ref = int(np.argmin(np.abs(visco.freqs - reduced.reference_frequency)))
-    for name, frf in modal_frfs.items():
-        err_ref = np.abs(frf.H[:, k_ref] - visco.H[:, k_ref]) / np.abs(visco.H[:, k_ref])
-        err_0 = np.abs(frf.H[:, 0] - visco.H[:, 0]) / np.abs(visco.H[:, 0])
-        print(
-            f"{name:45s} at {visco.freqs[k_ref]:.0f} Hz: max {err_ref.max():6.1%}, median {np.median(err_ref):5.1%};"
-            f" at 0 Hz: max {ru.analysis.format_small(err_0.max())}"
-        )
-
-# %%
-# The default model holds every tassello within 5 % at the freezing frequency and 0.5 % at 0 Hz
-if has_reduction:
-    frf = reduced.frf
-    assert np.all(np.abs(frf.H[:, k_ref] - visco.H[:, k_ref]) <= 0.05 * np.abs(visco.H[:, k_ref]))
-    assert np.all(np.abs(frf.H[:, 0] - visco.H[:, 0]) <= 0.005 * np.abs(visco.H[:, 0]))
+    local = ru.analysis.local_frf_errors(visco, modal_frfs, reduced.reference_frequency)
+    percent, small = "{:.1%}".format, ru.analysis.format_small
+    print(f"over the {static.tasselli.n} tasselli, at {local.attrs['f']:.0f} Hz and at 0 Hz:")
+    print(local.to_string(formatters={"max at f": percent, "median at f": percent, "max at 0 Hz": small}))
+    # the default model holds every tassello within 5 % at the freezing frequency, 0.5 % at 0 Hz
+    default = local.loc["frozen complex + identified damping (default)"]
+    assert default["max at f"] <= 0.05 and default["max at 0 Hz"] <= 0.005
 
 # %% [markdown]
 # The paper's model (real modes + identified diagonal damping) sums correctly but misses some
@@ -381,13 +367,7 @@ from ipywidgets import IntSlider, interact
 
 
 def show_tassello(tassello=37):
-    if not has_reduction:
-        return
-    frfs = {
-        "FETvisco (direct)": visco,
-        "paper: storage + identified": modal_frfs["paper: storage moduli + identified damping"],
-        "frozen complex + identified (default)": reduced.frf,
-    }
+    frfs = {"FETvisco (direct)": visco, **(modal_frfs if has_reduction else {})}
     ru.figures.superposition.plot_tassello_frf(static, frfs, tassello)
     plt.show()
 

@@ -39,9 +39,8 @@
 #   hub-force transfers from 0 to 400 Hz with the frequency-dependent moduli (the paper's
 #   FETvisco).
 #
-# The tire file selects the model: ``[tire] model = "cross-section"`` (``data/tires/
-# 165_65R14_cross_section.toml``). Notebooks 02-07 run the RM pipeline on it
-# (section 11 says where).
+# The tire file selects the model: ``[tire] model = "cross-section"``
+# (``data/tires/165_65R14_cross_section.toml``); section 11 says where the RM chain runs on it.
 
 # %%
 import matplotlib.pyplot as plt
@@ -97,9 +96,8 @@ plt.show()
 # ``N = C / r`` with one constant from the bead to the belt edge, ``C = p (r_0^2 - r_w^2) / 2``;
 # the two ends fix the widest radius ``r_w``. A linear inflation solve of the layered section
 # gives the pre-stress. Its meridional force follows the membrane value within about ±25 %:
-# the rubber layers take some hoop force (the negative ``N_theta`` on the sidewall) and
-# bending, which the pure cord membrane leaves out; the belt carries the hoop force at the
-# crown.
+# the rubber layers take some hoop force (the negative ``N_theta`` on the sidewall) and bending,
+# which the pure cord membrane leaves out; the belt carries the hoop force at the crown.
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -149,11 +147,9 @@ assert three_d_difference < 1e-10
 # Each harmonic's natural frequencies with the rim clamped and the tread free: the tire's
 # dispersion. The radial branch rises ~25 Hz per harmonic for ``n = 3..7`` and ~16 Hz per
 # harmonic by ``n = 10..12``, where the belt's bending and the pressure's tension share the
-# stiffness; the lateral branch (the belt rocking on the sidewalls) runs beside it. The dashed line is the ring model's closed-form radial
-# branch (notebook 01), a tire with the same targets built from calibrated springs.
-#
-# No measured frequencies of a similar tire are in the repository: the comparison with a
-# measurement is still open.
+# stiffness; the lateral branch (the belt rocking on the sidewalls) runs beside it. The dashed
+# line is the ring model's closed-form radial branch (notebook 01), a tire with the same targets
+# built from calibrated springs. (The repository holds no measured frequencies of such a tire.)
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -176,9 +172,9 @@ plt.show()
 # Loading adds one-sided, frictionless contact on the grid (active set on the vertical
 # compliance of 2175 candidate points, each a 3 mm arc). The model is linear about the inflated
 # state: it neglects the change of pre-stress and geometry over the ~22 mm deflection, friction
-# in the footprint and the tread's own nonlinearity. The hub force is computed apart, as the
-# rim's ``n = 1`` reaction: it balances the load to round-off. Notebook 13 draws its pressure
-# map and tasselli (Fig. 2) beside the other tire models', on one colour scale.
+# in the footprint and the tread's own nonlinearity. The hub force, computed apart as the rim's
+# ``n = 1`` reaction, balances the load to round-off. Notebook 13 draws the pressure map and
+# tasselli (Fig. 2) beside the other tire models', on one colour scale.
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -208,11 +204,10 @@ plt.show()
 #
 # With the contact points tied to the road (the linearisation of the paper's FE model), the hub
 # force per unit road displacement at each of the ~890 points, $h(\omega)$, gives
-# $H_{tot} = \sum h$ and every tassello's $H_i$ — the input of notebooks 02-07. It
-# is computed from the harmonic sum at every frequency, 0-400 Hz every 1 Hz: every harmonic is
-# Ritz-reduced (static shapes at 0 and 400 Hz, plus its modes below 1 kHz; ≤ 3e-3 of the direct
-# solve); the quasi-static ones (no mode below 1 kHz, n > ~50) are sampled in ``n`` and
-# interpolated. The tests compare the result with every harmonic solved directly (5 and 80 Hz).
+# $H_{tot} = \sum h$ and every tassello's $H_i$, the input of notebooks 02-07: a harmonic sum,
+# 0-400 Hz every 1 Hz, each harmonic Ritz-reduced (static shapes at 0 and 400 Hz plus its modes
+# below 1 kHz; ≤ 3e-3 of the direct solve, which the tests compare at 5 and 80 Hz), the
+# quasi-static ones (no mode below 1 kHz, n > ~50) sampled in ``n`` and interpolated.
 
 # %%
 # NBVAL_IGNORE_OUTPUT
@@ -294,24 +289,18 @@ print(f"contact points: largest difference {points_error:.1e} of the largest poi
 section_ident = section_reduced.identification
 print(section_ident.table(total_static=section_visco.H_tot[0]).to_string(float_format=lambda v: f"{v:.4f}"))
 print(f"most relevant vertical mode: {section_reduced.reference_frequency:.1f} Hz")
-section_modes = section_reduced.mode_table()
-share = section_modes["static share (N/mm)"]
-shown_modes = section_modes.assign(**{"static share (N/mm)": share.where(share.abs() > 1e-9, 0.0)})  # round-off -> 0
-print(shown_modes.head(12).to_string(float_format=lambda v: f"{v:.4g}"))
+section_modes = chapter.loaded_modes(section_reduced)  # static shares at round-off shown as 0
+print(section_modes.head(12).to_string(float_format=lambda v: f"{v:.4g}"))
 print(f"... {len(section_modes)} loaded modes up to {section_reduced.model.freqs.max():.0f} Hz")
-k_peak = int(np.argmax(np.abs(section_visco.H_tot[:251])))
-phases = {name: np.angle(v.frf.H_tot[k_peak], deg=True) for name, v in section_variants.items()}
-print(
-    f"phase of H_tot at {section_visco.freqs[k_peak]:.0f} Hz: direct {np.angle(section_visco.H_tot[k_peak], deg=True):.1f} deg, "
-    + ", ".join(f"{name.split(':')[0].split(' +')[0]} {p:.1f} deg" for name, p in phases.items())
-)
+phases = chapter.resonance_phases(section_visco, section_variants)
+print(f"phase of H_tot at {phases.attrs['f']:.0f} Hz: " + ", ".join(f"{k} {p:.1f} deg" for k, p in phases.items()))
 
 # %% [markdown]
 # $H_{tot}$ of this tire has one strong resonance, the only one above twice its static value
 # (the identification's threshold): its higher vertical modes (the loaded modes with a static
 # share, harmonics 2-6 in the table) nearly cancel in the sum over the footprint and leave
-# ripples, while every tassello sees them (notebook 03). The loaded modes without static share are those the
-# symmetric road cannot drive (their hub and road gains cancel). The storage-frozen model (the
+# ripples, while every tassello sees them (notebook 03). The loaded modes without static share
+# are those the symmetric road cannot drive (their hub and road gains cancel). The storage-frozen model (the
 # paper's as written) lags in phase at the resonance: freezing only the storage moduli takes the
 # rubber loss out of the loaded modes and of the residual flexibility (notebook 13, section 3,
 # draws Fig. 5 and its errors beside the other models). Approximation (a), on the resonances
@@ -349,16 +338,13 @@ print(chapter.damping_sources(tire).to_string(float_format=lambda v: f"{v:.3f}")
 # %% [markdown]
 # ## 9. Calibration from construction data
 #
-# The calibration targets of the 165/65 R14 (``data/calibration/165_65R14.toml``; the
-# cross-section file shares the size's targets). The construction values were not tuned to
-# them. Two choices were made with the targets in view: the rounded shoulder (3 mm over
-# 12 mm, which removes line loads at the tread edges) and the pneumatic law (section 8),
-# whose compound laws were themselves calibrated in the ring model — so ζ1 is a
-# calibration, not a prediction. The tangent vertical stiffness (the slope of the
-# load-deflection curve, what the ring model reports) misses: 18 % above the top of the range,
-# 33 % above its middle, while the secant load / deflection is inside it. We have not
-# identified the mechanism; candidates are what the linearisation neglects (section 5) and the
-# clamped beads (the real bead rotates on the rim flange).
+# The size's calibration targets (``data/calibration/165_65R14.toml``), to which the
+# construction values were not tuned. Two choices had the targets in view: the rounded shoulder
+# (3 mm over 12 mm: no line loads at the tread edges) and the pneumatic law (section 8), whose
+# compound laws were calibrated in the ring model — so ζ1 is a calibration, not a prediction.
+# The tangent vertical stiffness (the load-deflection curve's slope) misses, 18 % above the top
+# of the range, while the secant load / deflection is inside it. The mechanism is not identified;
+# candidates are what the linearisation neglects (section 5) and the clamped beads.
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -369,9 +355,8 @@ print(calibration[["target", "obtained", "unit", "ok"]].to_string(float_format=l
 # %% [markdown]
 # ## 10. Convergence
 #
-# The loaded tire against the number of harmonics and of crown elements (the contact grid
-# follows the crown nodes). Deflection and K_v move by less than 1 %; the footprint width is
-# counted in whole columns of contact nodes (4-6 mm apart), so it moves by a column.
+# The loaded tire against the harmonics and the crown elements (the contact grid follows the
+# crown nodes): deflection and K_v move by < 1 %, the width by a column of contact nodes (4-6 mm).
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -389,8 +374,7 @@ print(chapter.convergence_table(tire_name).to_string(float_format=lambda v: f"{v
 # | DOF | ~8000 | see the comparison table (per harmonic × harmonics) |
 # | air cavity | not modelled | optional: `[cavity] enabled`, off by default (notebook 14) |
 #
-# The numbers the paper gives for its FET — the first vertical resonance near 80 Hz and the
-# footprint of 71 tasselli — are in the comparison and calibration tables above. The RM chain
-# runs on this tire stage by stage: its modal reduction in section 7, Fig. 2, 5, 9 and 14 beside
-# the other tire models in notebook 13, any of notebooks 01-07 with `tire_name` set to this
-# file, its air cavity in notebook 14 and the extension to 400 Hz in notebook 10.
+# The paper's numbers for its FET (first vertical resonance near 80 Hz, 71 tasselli) are in the
+# tables above. The RM chain runs on this tire: its modal reduction in section 7, Fig. 2, 5, 9
+# and 14 beside the other models in notebook 13, notebooks 01-07 with `tire_name` set to this
+# file, its air cavity in notebook 14, the extension to 400 Hz in notebook 10.

@@ -86,6 +86,43 @@ def peak_comparison(
     return pd.DataFrame(rows, index=pd.Index(np.arange(1, len(rows) + 1), name="peak"))
 
 
+def local_frf_errors(reference, models: dict, frequency: float) -> pd.DataFrame:
+    """Relative error of each model's local FRFs :math:`H_i` against the reference's, tassello by tassello.
+
+    A sum over the footprint hides errors that cancel; this compares every tassello, at the sample
+    nearest ``frequency`` (Hz) and at 0 Hz.
+
+    Parameters
+    ----------
+    reference : FRFResult
+        The reference FRFs (e.g. the direct viscoelastic ones), starting at 0 Hz.
+    models : dict of str to FRFResult
+        The approximations, on the reference's frequencies.
+    frequency : float
+        Frequency of the first comparison (Hz), within the reference's range.
+
+    Returns
+    -------
+    DataFrame
+        One row per model: ``max at f``, ``median at f`` (over the tasselli, at the sample ``f``
+        nearest ``frequency``) and ``max at 0 Hz``; the sample's frequency is in ``attrs["f"]``.
+    """
+    freqs = np.asarray(reference.freqs, dtype=float)
+    if freqs[0] != 0.0:
+        raise ValueError(f"reference.freqs: must start at 0 Hz for the static comparison, starts at {freqs[0]} Hz")
+    if not freqs[0] <= frequency <= freqs[-1]:
+        raise ValueError(f"frequency = {frequency} Hz: valid range is [0, {freqs[-1]}] Hz (the reference's)")
+    k = int(np.argmin(np.abs(freqs - frequency)))
+    rows = {}
+    for name, frf in models.items():
+        at_f = np.abs(frf.H[:, k] - reference.H[:, k]) / np.abs(reference.H[:, k])
+        at_0 = np.abs(frf.H[:, 0] - reference.H[:, 0]) / np.abs(reference.H[:, 0])
+        rows[name] = {"max at f": at_f.max(), "median at f": float(np.median(at_f)), "max at 0 Hz": at_0.max()}
+    table = pd.DataFrame(rows).T.rename_axis("model")
+    table.attrs["f"] = float(freqs[k])
+    return table
+
+
 def format_small(value: float, floor: float = 1e-9) -> str:
     """``"< floor"`` for round-off-sized values, else ``value`` in ``.1e``: stable printed output."""
     return f"< {floor:.0e}" if abs(value) < floor else f"{value:.1e}"

@@ -1,13 +1,16 @@
-"""The shared measures of analysis.py: the choice among equal candidates that round-off cannot make."""
+"""The shared measures of analysis.py: the choice among equal candidates that round-off cannot make, the
+tassello-by-tassello FRF errors."""
 
 from __future__ import annotations
+
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from roadnoise_utils.analysis import argmax_all
+from roadnoise_utils.analysis import argmax_all, local_frf_errors
 
 finite = st.floats(-1e6, 1e6, allow_nan=False, allow_infinity=False)
 
@@ -42,3 +45,26 @@ def test_argmax_all_names_both_of_a_tie_and_one_of_distinct_values():
 def test_argmax_all_refuses_bad_input(values, rtol, message):
     with pytest.raises(ValueError, match=message):
         argmax_all(np.array(values, dtype=float), rtol)
+
+
+def test_local_frf_errors_of_a_known_perturbation():
+    """Tasselli scaled by 1 + e_i give the relative error e_i at every frequency: max and median over them."""
+    freqs = np.arange(0.0, 101.0, 1.0)
+    rng = np.random.default_rng(3)
+    reference = SimpleNamespace(freqs=freqs, H=rng.normal(size=(5, freqs.size)) + 1j * rng.normal(size=(5, freqs.size)))
+    scale = np.array([0.01, -0.02, 0.03, 0.0, 0.05])
+    models = {"same": reference, "scaled": SimpleNamespace(freqs=freqs, H=reference.H * (1 + scale[:, None]))}
+    table = local_frf_errors(reference, models, 42.3)
+    assert table.attrs["f"] == 42.0
+    assert table.loc["same"].to_list() == [0.0, 0.0, 0.0]
+    assert table.loc["scaled"].to_numpy() == pytest.approx([0.05, 0.02, 0.05], rel=1e-12)
+
+
+def test_local_frf_errors_bad_input():
+    freqs = np.arange(1.0, 11.0)
+    reference = SimpleNamespace(freqs=freqs, H=np.ones((2, freqs.size)))
+    with pytest.raises(ValueError, match="start at 0 Hz"):
+        local_frf_errors(reference, {}, 5.0)
+    reference.freqs = freqs - 1.0
+    with pytest.raises(ValueError, match=r"frequency = 12.0 Hz: valid range is \[0, 9.0\]"):
+        local_frf_errors(reference, {}, 12.0)

@@ -9,12 +9,12 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ..response.modal_reduction import identify_modes
+from ..response.modal_reduction import ModalReduction, identify_modes
 from ..tire.cross_section import stages as section_stages
 from ..tire.cross_section.dynamics import harmonic_modes
 from ..tire.cross_section.spec import LAYER_KINDS, CordLayer, CrossSectionSpec
 from ..tire.cross_section.static import SectionTire, section_summary
-from ..tire.model import tire_model
+from ..tire.model import FRFResult, tire_model
 
 
 def layer_table(spec: CrossSectionSpec) -> pd.DataFrame:
@@ -112,6 +112,33 @@ def model_comparison(ring: str = "165_65R14", cross: str = "165_65R14_cross_sect
             "zeta1, modal fit": float(modes.damping[0]),
         }
     return pd.DataFrame(out)
+
+
+def loaded_modes(reduced: ModalReduction, floor: float = 1e-9) -> pd.DataFrame:
+    """The loaded modes of a modal reduction, static shares below ``floor`` (N/mm, round-off) shown as 0.
+
+    The modes the symmetric road cannot drive have hub and road gains that cancel: their static
+    share is round-off, whose printed digits would change with the BLAS build.
+    """
+    modes = reduced.mode_table()
+    share = modes["static share (N/mm)"]
+    return modes.assign(**{"static share (N/mm)": share.where(share.abs() > floor, 0.0)})
+
+
+def resonance_phases(direct: FRFResult, variants: dict[str, ModalReduction], f_max: float = 250.0) -> pd.Series:
+    """Phase of :math:`H_{tot}` (deg) at its largest resonance below ``f_max`` (Hz): direct and each modal variant.
+
+    The index is ``"direct"`` and each variant's name up to its first ``":"`` or ``" +"``; the
+    resonance's frequency (Hz) is in ``attrs["f"]``.
+    """
+    band = np.asarray(direct.freqs) <= f_max
+    k = int(np.argmax(np.abs(direct.H_tot[band])))
+    phases = {"direct": np.angle(direct.H_tot[k], deg=True)}
+    for name, variant in variants.items():
+        phases[name.split(":")[0].split(" +")[0]] = np.angle(variant.frf.H_tot[k], deg=True)
+    series = pd.Series(phases, name="phase (deg)")
+    series.attrs["f"] = float(direct.freqs[k])
+    return series
 
 
 def tire_mass(tire: SectionTire) -> float:

@@ -106,7 +106,7 @@ def plot_tassello_frf(static: Footprint, frfs: dict[str, FRFResult], tassello: i
     a1 = fig.add_subplot(2, 3, (1, 2))
     a2 = fig.add_subplot(2, 3, (4, 5), sharex=a1)
     a3 = fig.add_subplot(1, 3, 3)
-    for (label, frf), style in zip(frfs.items(), ["k-", "--", ":"]):
+    for (label, frf), style in zip(frfs.items(), ["k-", "--", ":", "-."], strict=False):
         k = frf.freqs <= f_max
         a1.plot(frf.freqs[k], np.abs(frf.H[i, k]) / 1e3, style, label=label)
         a2.plot(frf.freqs[k], np.degrees(np.angle(frf.H[i, k])), style)
@@ -132,7 +132,7 @@ def plot_hub_frf(frfs: dict[str, FRFResult], f_max: float = 300.0, ax: plt.Axes 
     """|G_H| (hub force per unit hub displacement, footprint held) in N/mm."""
     if ax is None:
         _, ax = plt.subplots(figsize=(8, 4))
-    for (label, frf), style in zip(frfs.items(), ["k-", "--", ":"]):
+    for (label, frf), style in zip(frfs.items(), ["k-", "--", ":", "-."], strict=False):
         k = frf.freqs <= f_max
         ax.plot(frf.freqs[k], np.abs(frf.G_H[k]) / 1e3, style, label=label)
     ax.set_xlabel("Frequency (Hz)")

@@ -299,14 +299,15 @@ def cache_enabled() -> bool:
     return os.environ.get("ROADNOISE_CACHE", "on").lower() not in ("off", "0", "false", "no")
 
 
-def _timed(name: str, compute: Callable[[], T]) -> T:
-    """``compute()``; with ``ROADNOISE_STAGE_LOG`` set, its wall time appended to that file (one line per stage run)."""
+def _timed(name: str, compute: Callable[[], T], key: str = "-") -> T:
+    """``compute()``; with ``ROADNOISE_STAGE_LOG`` set, a line appended to that file per stage run: the stage's
+    name, its wall time (s), the process id and the cache key (``-`` with the cache off)."""
     log = os.environ.get("ROADNOISE_STAGE_LOG")
     start = time.perf_counter()
     value = compute()
     if log:
         with open(log, "a") as out:
-            out.write(f"{name}\t{time.perf_counter() - start:.2f}\t{os.getpid()}\n")
+            out.write(f"{name}\t{time.perf_counter() - start:.2f}\t{os.getpid()}\t{key}\n")
     return value
 
 
@@ -354,7 +355,7 @@ def cached(
             return value
         _remove_orphans(path, locked)
         with recording_reads() as reads:
-            value = _timed(name, compute)
+            value = _timed(name, compute, key)
         STATS[name, "computed"] += 1
         try:
             _write(path, (value, reads))

@@ -36,7 +36,7 @@ import re
 import shutil
 import tempfile
 import time
-from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, ThreadPoolExecutor, wait
 from pathlib import Path
 
 import nbformat
@@ -255,7 +255,11 @@ def _execute_all(
     done, table = {}, None
     started = start_order(paths, seconds or {})
     chapters = set(started[:-1])
-    with ProcessPoolExecutor(max_workers=workers, mp_context=multiprocessing.get_context("spawn")) as pool:
+    if workers == 1:  # one at a time: a thread of this process (the kernels are processes of their own)
+        executor = ThreadPoolExecutor(max_workers=1)
+    else:
+        executor = ProcessPoolExecutor(max_workers=workers, mp_context=multiprocessing.get_context("spawn"))
+    with executor as pool:
         pending = {pool.submit(_timed_execution, path, timeout, workers > 1): path for path in started}
         claims_due = report
         if claims_due and not started:  # no notebook: the claims alone

@@ -341,6 +341,26 @@ class ModalReduction:
             index=pd.Index(np.arange(1, m.freqs.size + 1), name="mode"),
         )
 
+    def damping_comparison(self) -> pd.DataFrame:
+        """The identified loss factors against the frozen model's own, for the modes seen in H_tot.
+
+        Two independent routes to each mode's damping (paper approximation b): the hysteretic fit
+        of the viscoelastic H_tot sees the rubber's loss at the mode's own frequency, the frozen
+        model at the freezing frequency. Columns ``frequency (Hz)``, ``eta identified``,
+        ``eta frozen model`` and their ``ratio``.
+        """
+        table = self.mode_table()
+        table = table[table["damping from"] == "identified"]
+        comparison = pd.DataFrame(
+            {
+                "frequency (Hz)": table["frequency (Hz)"],
+                "eta identified": table["loss factor used"],
+                "eta frozen model": table["loss factor, frozen model"],
+            }
+        )
+        comparison["ratio"] = comparison["eta identified"] / comparison["eta frozen model"]
+        return comparison
+
 
 def apply_identified_damping(
     eigenvalues: np.ndarray, hub_gain: np.ndarray, ident: ModeIdentification, frozen: str, f_band: float

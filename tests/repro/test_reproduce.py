@@ -141,7 +141,7 @@ def test_figures_are_written_whatever_the_matplotlib_backend(tmp_path, monkeypat
     out.mkdir()
     (out / "stale.png").write_bytes(b"old")
     (out / "notes.txt").write_text("mine")
-    rows, table = reproduce.reproduce([nb], out, report=False)
+    rows, table = reproduce.reproduce([nb], out, report=False, workers=1)  # one: in this process
     assert table is None and [r["file"] for r in rows] == ["01-demo-fig01-a-line.png"]
     assert (out / "01-demo-fig01-a-line.png").read_bytes().startswith(b"\x89PNG")
     assert not (out / "stale.png").exists() and (out / "notes.txt").read_text() == "mine"
@@ -165,7 +165,7 @@ def test_a_failure_writes_nothing(tmp_path, second, message):
     out.mkdir()
     (out / "previous.png").write_bytes(b"kept")
     with pytest.raises(reproduce.ReproductionError, match=message):
-        reproduce.reproduce([first, bad], out, report=False)
+        reproduce.reproduce([first, bad], out, report=False, workers=1)
     assert [p.name for p in out.iterdir()] == ["previous.png"]
     assert all(p.read_bytes() == data for p, data in before.items())
 
@@ -174,7 +174,7 @@ def test_a_stalled_notebook_is_retried_once(tmp_path):
     marker = tmp_path / "first-attempt"
     stall = f"import pathlib, time\nm = pathlib.Path({str(marker)!r})\nif not m.exists():\n    m.touch()\n    time.sleep(60)"
     nb = _notebook(tmp_path / "01-slow.ipynb", stall, PLOT)
-    rows, _ = reproduce.reproduce([nb], tmp_path / "figures", timeout=3, report=False)
+    rows, _ = reproduce.reproduce([nb], tmp_path / "figures", timeout=3, report=False, workers=1)
     assert marker.exists() and len(rows) == 1
 
 

@@ -68,6 +68,26 @@ def test_modal_local_frfs_match_direct(reduced, visco):
     assert np.all(np.abs(frf.H[:, 0] - visco.H[:, 0]) <= 0.005 * np.abs(visco.H[:, 0]))
 
 
+def test_the_tassello_table_is_the_direct_comparison(reduced, visco):
+    """local_frf_errors gives the largest and median tassello error the assertion above bounds."""
+    table = ru.analysis.local_frf_errors(visco, {"modal": reduced.frf}, reduced.reference_frequency)
+    k = int(np.argmin(np.abs(visco.freqs - reduced.reference_frequency)))
+    at_f = np.abs(reduced.frf.H[:, k] / visco.H[:, k] - 1)
+    assert table.loc["modal", "max at f"] == pytest.approx(at_f.max(), rel=1e-9)
+    assert table.loc["modal", "median at f"] == pytest.approx(np.median(at_f), rel=1e-9)
+    assert table.attrs["f"] == visco.freqs[k]
+
+
+def test_damping_comparison_names_the_identified_modes(reduced):
+    """One row per identified mode, in order, the identified loss factor over the frozen model's own."""
+    comparison = reduced.damping_comparison()
+    ident = reduced.identification
+    assert len(comparison) == ident.freqs.size
+    assert comparison["eta identified"].to_numpy() == pytest.approx(ident.loss_factor, rel=1e-12)
+    eta_frozen = (reduced.frozen_eigenvalues.imag / reduced.frozen_eigenvalues.real)[comparison.index - 1]
+    assert comparison["ratio"].to_numpy() == pytest.approx(ident.loss_factor / eta_frozen, rel=1e-12)
+
+
 def test_paper_variant_sums_well_below_100_hz(fet, flat, visco):
     """The paper's FET-frozen model with identified damping: Fig. 5 accuracy, decreasing with frequency."""
     paper = ru.modal_reduction(fet, flat, visco=visco, frozen="storage", damping="identified")
