@@ -84,7 +84,7 @@ def test_the_static_state_stays_at_rest(stepper_and_static):
 
 
 def test_response_is_linear_and_decays(stepper_and_static):
-    """At rest the hub force stays at the load (less 5e-6 for the spread factor) to round-off; a force
+    """At rest the hub force stays at the load (less 5e-6 for the spread factor) but for round-off; a force
     pulse at one tread point: twice the pulse, twice the response through the pulse and the first
     ringing (superposition); the free response after it decays (every Maxwell branch dissipates, the
     scheme is stable)."""
@@ -102,7 +102,7 @@ def test_response_is_linear_and_decays(stepper_and_static):
         return np.array(hub)
 
     rest = hub_force(0.0, 100)
-    assert np.ptp(rest) < 1e-12 * static.load
+    assert np.ptp(rest) < 1e-10 * static.load  # round-off of the steps (1e-14 - 1e-12, with the BLAS threads)
     single, double = hub_force(1.0, 600) - rest[0], hub_force(2.0, 100) - rest[0]
     assert np.abs(double - 2 * single[:100]).max() < 1e-7 * np.abs(double).max()
     early, late = np.abs(single[50:200]).max(), np.abs(single[450:600]).max()
