@@ -28,7 +28,8 @@
 # 2. divide the footprint into ~71 blocks, the *tasselli*, and compute the frequency response
 #    $H_i(\omega)$ from the vertical displacement of each tassello to the hub force —
 #    fast, through a modal model frozen at ~70 Hz with damping identified from the full
-#    viscoelastic model; check that $\sum_i H_i = H_{tot}$ (Eq. i, Fig. 5);
+#    viscoelastic model; check the superposition $\sum_i H_i = H_{tot}$ (the paper's Eq. i,
+#    Fig. 5);
 # 3. fit each $H_i$ with an 8-pole/8-zero transfer function (Eq. 1, Fig. 6) and stack the
 #    state-space models into one time-domain tire (Eq. 2-4);
 # 4. drive it with the road flowing through the footprint: a cleat on a drum with the hub

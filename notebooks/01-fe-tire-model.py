@@ -273,7 +273,7 @@ print(f"tassello 1 (leading edge) {ramp[0] * 1e3:+.2f} mm, tassello {t.n} (trail
 #
 # The footprint is tied to the road (tread springs, the contact points stick), the hub is
 # fixed and the rubber moduli are frozen at their 70 Hz storage values, as in the paper's
-# FET<sub>70Hz</sub> model. The modes symmetric fore-aft *and* left-right are the only ones that
+# FET<sub>70Hz</sub> model (notebook 02 freezes them at our own most relevant vertical mode). The modes symmetric fore-aft *and* left-right are the only ones that
 # load the hub vertically ("vertical modes"); the marker size is their static share of the
 # whole-footprint-to-hub FRF $H_{tot}(0)$.
 
@@ -372,4 +372,5 @@ _ = interact(
 
 # %% [markdown]
 # **Next:** notebook 02 computes the direct FRFs of every tassello, checks the paper's
-# superposition principle (Eq. i, Fig. 5) and builds the modal model FET<sub>70Hz</sub>.
+# superposition principle (Eq. i, Fig. 5) and builds the paper's modal model, frozen at our
+# tire's most relevant vertical mode.

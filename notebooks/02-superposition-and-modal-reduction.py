@@ -38,9 +38,8 @@
 # compares $\sum_i H_i$ of the modal model with $H_{tot}$ of FETvisco: "a good matching whose
 # accuracy decreases with increasing frequency".
 #
-# In this chapter we compute the direct viscoelastic FRFs (cheaply: one adjoint solve per
-# frequency gives every tassello), verify Eq. (i) exactly, reproduce the procedure of Fig. 4,
-# the figure of Fig. 5, and show where the paper's modal model is and is not accurate.
+# Here: the direct viscoelastic FRFs (one adjoint solve per frequency gives every tassello),
+# Eq. (i) verified, the procedure of Fig. 4, Fig. 5, and where the modal model is accurate.
 
 # %%
 import matplotlib.pyplot as plt
@@ -99,8 +98,8 @@ assert superposition_error < 1e-9 or not ru.tire_model(tire).has("fe_mesh")  # f
 #
 # The paper first verified "that the lateral and longitudinal displacements of the footprint
 # nodes give an insignificant contribution to the vertical component of the force at the hub".
-# Our footprint sticks to the road (the tread shear springs hold it); letting it slide freely
-# is the opposite extreme:
+# Our footprint sticks to the road (the tread shear springs hold it); sliding freely is the
+# opposite extreme:
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -175,10 +174,11 @@ if has_reduction:
 #
 # We build three modal models:
 #
-# * **paper** — FET80Hz with the *storage* moduli frozen (no loss, real modes) and the
-#   identified damping joined to the identified modes, interpolated for the others: the
-#   paper's procedure as written;
-# * **frozen complex + identified damping** (our default, used by the later stages) — the
+# * **paper** — the paper's FET70Hz at our freezing frequency, the *storage* moduli frozen (no
+#   loss, real modes) and the identified damping joined to the identified modes, interpolated
+#   for the others: the paper's procedure as written;
+# * **frozen complex + identified damping** (our default modal model; the later stages fit the
+#   direct FRFs instead, for the reason notebook 03 gives) — the
 #   *complex* moduli (storage and loss) frozen, and the identified loss factors joined to the
 #   identified modes;
 # * **frozen complex, own damping** — the same modes keeping their own loss factors: a check
@@ -241,9 +241,10 @@ if has_reduction:
 
 # %%
 # Fig. 5 analogue: |H_tot| of FETvisco vs |sum_i H_i| of the modal models (or of the direct H_i), 0-300 Hz
-f_frozen = ru.claims.paper_value("freezing_frequency")  # data/paper/claims.toml
 sums = modal_frfs if has_reduction else {"sum of the direct H_i": visco}
-ax = ru.figures.superposition.plot_superposition(visco, sums, f_max=300, paper={"paper: freezing frequency": f_frozen})
+lines = {"paper: freezing frequency": ru.claims.paper_value("freezing_frequency")}  # data/paper/claims.toml
+lines.update({"ours: freezing frequency": reduced.reference_frequency} if has_reduction else {})
+ax = ru.figures.superposition.plot_superposition(visco, sums, f_max=300, paper=lines)
 ax.set_title("Fig. 5 analogue: whole footprint (SISO) vs sum of the tasselli (MIMO)")
 plt.show()
 

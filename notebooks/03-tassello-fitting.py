@@ -69,8 +69,8 @@ band = visco.freqs <= f_max
 # The paper fits the modal local FRFs. Our frozen complex modal model has a constant complex
 # stiffness — hysteretic damping, which is not causal: each mode $1/(\lambda_r - \omega^2)$
 # has a mirror pole in the right half plane, which no stable rational model reproduces. The
-# direct viscoelastic FRFs (fractional Zener rubber) are causal and cost us 1.5 s (notebook
-# 02), so we fit those; the modal ones are shown alongside.
+# direct viscoelastic FRFs (fractional Zener rubber) are causal and cheap to compute (one
+# adjoint solve per frequency, notebook 02), so we fit those; the modal ones are shown alongside.
 
 # %%
 # NBVAL_CHECK_OUTPUT

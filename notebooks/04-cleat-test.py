@@ -138,7 +138,10 @@ print(f"{speed_kmh:.0f} km/h:\n" + dynamic.peaks.to_string(float_format=lambda v
 # %% [markdown]
 # Two peaks in both runs, as in the paper: one as the cleat enters the footprint, one as it
 # leaves. At 30 km/h the cleat crosses the ~100 mm footprint in 12 ms, about one period of the
-# first vertical mode, so the second passage pushes in phase with the ringing left by the first.
+# first vertical mode: the dynamics raise the entry peak and lower the exit one. The chain is
+# linear and the footprint symmetric, so the exit push alone would give the entry's peak; the
+# ringing left by the entry is out of phase with it when the cleat leaves, and takes the
+# difference off (notebook 08 sweeps the speed).
 #
 # ### The free decay
 #
@@ -180,11 +183,12 @@ ru.claims.check(claims)
 # one-sided contact and judges *that* against the measurement.
 #
 # Why the linear peak is low: the force a cleat sends to the hub is set by the *static
-# influence* $H_i(0)$ of the rows it crosses. Our ring does not spread a push at the footprint
-# edge; it *concentrates* it: the belt on the tread springs is a beam on an elastic foundation,
-# whose response to an edge load decays as $e^{-\beta s}\cos\beta s$ with
-# $\beta = (k_{tread}\,b / 4EI)^{1/4}$, so nearly all of $K_v$ sits in an edge zone $1/\beta$
-# deep (computed below). The paper's 1200 N needs an entry row of about $0.75\,K_v$ *alone*, the
+# influence* $H_i(0)$ of the rows it crosses. Our ring puts nearly all of $K_v$ at the footprint's
+# ends, but shares it between the entry row and its neighbour: the belt on the tread springs is
+# a beam on an elastic foundation, whose response to an edge load decays as
+# $e^{-\beta s}\cos\beta s$ with $\beta = (k_{tread}\,b / 4EI)^{1/4}$, so $K_v$ sits in an
+# edge zone $1/\beta$ deep, two rows at each end (computed below). The paper's 1200 N needs an
+# entry row of about $0.75\,K_v$ *alone*, the
 # leading and trailing rows together well above $K_v$ and the interior negative — which a solid
 # tread on a shell carcass (the paper's 3D FE tire) gives and a ring on springs cannot. The
 # next cells show the influence profile and that no plausible change of the ring's parameters
@@ -205,13 +209,11 @@ plt.show()
 # Row influences, and the quasi-static force straight from them (no dynamics at all)
 print((rows.round(1) + 0.0).to_string(float_format=lambda v: f"{v:.1f}"))  # + 0.0: no "-0.0"
 direct_quasi = ru.experiments.cleat.quasi_static_force(static_influence, quasi_road)
-edge = rows["H(0) of the row (N/mm)"].iloc[[0, 1, -2, -1]].sum() / rows["H(0) of the row (N/mm)"].sum()
 ring_tire = ru.tire_model(tire).kind == "ring"  # the beam on springs and its parameters are the ring's
 if ring_tire:
-    k_foundation = tire.tread.normal_stiffness_per_area * tire.geometry.belt_width
-    beta = (k_foundation / (4 * tire.belt.bending_stiffness)) ** 0.25
+    beta = ru.tire.ring.closed_form.edge_zone_wavenumber(tire)
     print(f"edge zone 1/beta = {1e3 / beta:.1f} mm (beta = (k_tread b / 4 EI)^(1/4) = {beta:.1f} /m); ", end="")
-print(f"two outer rows each side: {edge:.0%} of K_v")
+print(f"two outer rows each side: {ru.experiments.cleat.edge_share(rows):.0%} of K_v")
 print(
     f"peak of sum_i H_i(0) u_i: {direct_quasi.max():.1f} N; simulated at {quasi_static_kmh} km/h: "
     f"{quasi.peak_force:.1f} N"
@@ -228,9 +230,10 @@ if ring_tire:
         "sidewall rubber x 3 (radial)": {"foundation.radial_rubber": 3 * tire.foundation.radial_rubber},
         "sidewalls 3 x stiffer at the edges": {"foundation.edge_factor": 3 * tire.foundation.edge_factor},
     }
-    for name, change in variants.items():
-        spec = tire.replace(**change)
-        peak = ru.experiments.cleat.quasi_static_peak(spec, height, base, conditions.shape, conditions.drum_radius)
+    peaks = ru.experiments.cleat.peak_sensitivity(
+        tire, variants, height, base, conditions.shape, conditions.drum_radius
+    )
+    for name, peak in peaks.items():
         print(f"{name:36s} quasi-static peak {peak:6.0f} N")
 else:
     print(f"{tire.name}: not applicable: the ring's parameters (its belt, tread springs and sidewalls)")

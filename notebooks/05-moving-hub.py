@@ -93,7 +93,8 @@ band = visco.freqs <= 250
 ru.figures.moving_hub.plot_frf_pair(
     visco.freqs[band],
     {"G_H, FE direct": visco.G_H[band], f"G_H, fit ({hub.n_poles} poles)": hub[0](visco.freqs[band])},
-    "|G_H| (N/m)",
+    "|G_H| (N/mm)",
+    scale=1e-3,
 )
 plt.show()
 
@@ -141,8 +142,9 @@ if fe_check:
     ru.figures.moving_hub.plot_frf_pair(
         freqs,
         {"FE, hub free (direct)": f_fe, "RM model (Eq. 5-7)": f_rm},
-        "|F_M / road displacement| (N/m)",
+        "|F_M / road displacement| (N/mm)",
         ax=axes[1],
+        scale=1e-3,
     )
     plt.show()
 

@@ -78,7 +78,6 @@ profiles = {name: ru.textures.generate_profile(sp, length, 0.002, seed=seed) for
 measured = {name: ru.textures.profile_psd(p) for name, p in profiles.items()}
 n = np.logspace(-2, np.log10(25), 300)
 ru.figures.road_input.plot_road_spectra(spectra, n, ru.textures.ISO8608_CLASSES, measured=measured)
-plt.title("Road spectra: targets, generated profiles and the ISO 8608 classes (grey)")
 plt.show()
 
 # %%
@@ -268,7 +267,11 @@ def show_texture(texture, seed):
     spectrum = ru.textures.load_texture(texture)
     profile = ru.textures.generate_profile(spectrum, 200.0, 0.002, seed=seed)
     ru.figures.road_input.plot_road_spectra(
-        {texture: spectrum}, n, ru.textures.ISO8608_CLASSES, measured={texture: ru.textures.profile_psd(profile)}
+        {texture: spectrum},
+        n,
+        ru.textures.ISO8608_CLASSES,
+        measured={texture: ru.textures.profile_psd(profile)},
+        title=f"{texture}: target and the profile of seed {seed}",
     )
     plt.show()
 

@@ -89,14 +89,15 @@ plt.show()
 freqs = np.linspace(1.0, 300.0, 600)
 fig10_bands = ru.claims.transmissibility_bands()  # the paper's three bands (data/paper/claims.toml)
 transmissibility = ru.vehicle.transmissibility(car, freqs)
-ax = ru.figures.quarter_car.plot_transmissibility(freqs, transmissibility, fig10_bands)
+statistics = ru.vehicle.transmissibility_statistics(car, fig10_bands)  # ours, the statistic of each claim
+paper_levels = {claim_id: ru.claims.paper_value(claim_id) for claim_id in fig10_bands}
+ax = ru.figures.quarter_car.plot_transmissibility(freqs, transmissibility, fig10_bands, None, paper_levels, statistics)
 ax.set_title("Fig. 10 analogue: transfer function between the accelerations at the shock absorber ends")
 plt.show()
 
 # %%
 # NBVAL_CHECK_OUTPUT
 # The character of Fig. 10, band by band: the statistic of |T| each claim is judged on
-statistics = ru.vehicle.transmissibility_statistics(car, fig10_bands)
 for claim_id, band_ in fig10_bands.items():
     print(
         f"{band_.statistic:4s} |T| {band_.f_low:.0f}-{band_.f_high:.0f} Hz: {statistics[claim_id]:.2f} ({band_.label})"
@@ -221,39 +222,35 @@ plt.show()
 #
 # The paper's Fig. 14 shows, at 120 km/h on the rough texture, 40-220 Hz on a log scale, "the
 # non-trivial contributions of the first four vertical modes of the tire". We find the peaks of
-# the (smooth, frequency-domain) hub-acceleration spectrum in that band and match them with the
-# vertical modes identified from the tire's fixed-hub $H_{tot}$ (notebook 02's procedure).
+# the smooth frequency-domain prediction (2D road, dashed) in that band, mark them on it, and
+# match them with the vertical modes identified from the tire's fixed-hub $H_{tot}$ (notebook
+# 02's procedure); the 3D road's time-domain spectrum shows where they stand out of the Welch
+# estimate and where a mode is only a shoulder.
 
 # %%
 # Fig. 14 analogue: hub acceleration 40-220 Hz, the four peaks matched with the tire's vertical modes
-visco = ru.stages.frf_visco(tire)
-identified = ru.response.modal_reduction.identify_modes(visco.freqs, visco.H_tot)  # step 1 of Fig. 4 (notebook 02)
-in_band = (f_check >= 40) & (f_check <= 220)
-peaks, _ = ru.analysis.resonance_peaks(f_check[in_band], np.sqrt(predicted[shown]["a_hub"][in_band]), min_ratio=0.0)
+mode_peaks = ru.experiments.corner.hub_mode_peaks(setup, road_test.spectra()[shown], road_test.speed)
 f3, p3 = spectra[shown]["a_hub"]
-ax = ru.figures.quarter_car.plot_spectra(
-    f3, {"rough, 3D road (time domain)": p3}, "hub acceleration ASD ((m/s²)/√Hz)", (40.0, 220.0), log=True
-)
-for k, fp in enumerate(peaks[:4]):
-    ax.axvline(fp, color="0.5", ls=":", lw=0.8)
-    ax.text(fp, ax.get_ylim()[1], f"mode {k + 1}\n{fp:.0f} Hz", ha="center", va="top", fontsize=8)
+ax = ru.figures.quarter_car.plot_hub_modes(f3, p3, mode_peaks)
 ax.set_title(f"Fig. 14 analogue: simulated hub accelerations at {speed_kmh:.0f} km/h on a {shown} texture")
 plt.show()
 
 # %%
 # NBVAL_CHECK_OUTPUT
 # The four peaks against the tire's vertical modes (fixed hub)
-for k, fp in enumerate(peaks[:4]):
-    j = int(np.argmin(np.abs(identified.freqs - fp)))
-    print(f"peak {k + 1}: {fp:6.1f} Hz  <-> vertical tire mode {j + 1} at {identified.freqs[j]:6.1f} Hz (fixed hub)")
-assert len(peaks) >= 4
+for k, row in mode_peaks.head(4).iterrows():
+    print(
+        f"peak {k}: {row['peak (Hz)']:6.1f} Hz  <-> vertical tire mode {int(row['nearest vertical mode'])} "
+        f"at {row['mode (Hz, fixed hub)']:6.1f} Hz (fixed hub)"
+    )
+assert len(mode_peaks) >= 4
 
 # %% [markdown]
 # ## 6. Speed
 
 # %%
 # NBVAL_IGNORE_OUTPUT
-# 10 s at 120 km/h sampled at 10 kHz, road to spectra (the goal: < 2 s on 2 cores)
+# 10 s at 120 km/h sampled at 10 kHz, road to spectra: the wall time of one texture
 one_texture = ru.experiments.road_test_conditions(speed_kmh, texture_names[:1], duration, seed)
 start = time.perf_counter()
 run = ru.experiments.quarter_car(setup, one_texture).runs[texture_names[0]]
@@ -309,5 +306,7 @@ _ = interact(
 )
 
 # %% [markdown]
-# **Done:** every stage of the RM model, from the FE tire to the vehicle corner. Notebook 00
-# gathers the paper's claims and our verdict on each.
+# **The paper's chain is complete:** every stage of the RM model, from the FE tire to the
+# vehicle corner; notebook 00 gathers the paper's claims and our verdict on each. Notebooks
+# 08-14 go beyond the paper: contact loss, the tire built from its cross-section, 400 Hz, the
+# whole car, design sweeps, the tire models side by side and the air cavity.

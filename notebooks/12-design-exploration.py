@@ -47,7 +47,7 @@ ru.set_style()
 # %% tags=["parameters"]
 # Parameters (papermill): the tire file, the grid (dotted tire-file names -> values, SI units), the
 # outputs and where to run (None: a local dask cluster; "serial"; or a scheduler address).
-# CI runs this small grid (4 designs, the tire file's own values among them); enlarge it freely,
+# A small grid (4 designs, the tire file's own values among them); enlarge it freely,
 # e.g. "operating.inflation_pressure": [2.0e5, 2.15e5, 2.3e5, 2.45e5, 2.6e5], "belt.bending_stiffness": [2.5, 5.0, 10.0].
 tire_name = "165_65R14"
 grid = {

@@ -109,10 +109,11 @@ for label, f in footprints.items():
 # NBVAL_IGNORE_OUTPUT
 # Direct FRFs of every model and the paper's modal reduction where the model has one (cached stages)
 visco = {label: ru.stages.frf_visco(tire) for label, tire in tires.items()}
+default = "frozen complex + identified damping (default)"
 variants = {
     label: {
         "paper: storage moduli + identified damping": ru.stages.modal_reduction(tire, frozen="storage"),
-        "frozen complex + identified damping (default)": ru.stages.modal_reduction(tire),
+        default: ru.stages.modal_reduction(tire),
     }
     for label, tire in tires.items()
     if ru.experiments.applicable(tire, "modal_reduction")
@@ -124,9 +125,9 @@ f_frozen = ru.claims.paper_value("freezing_frequency")  # data/paper/claims.toml
 fig, axes = plt.subplots(1, 3, figsize=(17, 4.5))
 for ax, (label, frf) in zip(axes, visco.items()):
     sums = {k: v.frf for k, v in variants[label].items()} if label in variants else {"sum of the files' H_i": frf}
-    ru.figures.superposition.plot_superposition(
-        frf, sums, f_max=300, ax=ax, paper={"paper: freezing frequency": f_frozen}
-    )  # fmt: skip
+    ours = {"ours: freezing frequency": variants[label][default].reference_frequency} if label in variants else {}
+    lines = {"paper: freezing frequency": f_frozen, **ours}
+    ru.figures.superposition.plot_superposition(frf, sums, f_max=300, ax=ax, paper=lines)
     ax.set_title(f"{label} ({tires[label] if isinstance(tires[label], str) else 'tire.toml'})")
 plt.show()
 
@@ -221,7 +222,7 @@ for label, row in rows.items():
     h = row["H(0) of the row (N/mm)"]
     print(
         f"{label:13s}: entry row {h.iloc[0]:5.1f} N/mm ({h.iloc[0] / h.sum():.0%} of K_v), "
-        f"two outer rows each end {h.iloc[[0, 1, -2, -1]].sum() / h.sum():.0%} of K_v, {len(h)} rows"
+        f"two outer rows each end {ru.experiments.cleat.edge_share(row):.0%} of K_v, {len(h)} rows"
     )
 
 # %% [markdown]
@@ -229,9 +230,9 @@ for label, row in rows.items():
 # by the first vertical mode, 82 Hz, on the cross-section tire; by its 107 Hz mode on the ring) — and the RM chain follows each FE solve within the fit error.
 # Neither reproduces the *size*: the peak is about the entry row's $H(0)$ times the cleat's mean
 # height over a row (~8 mm), so the paper's 1200 N needs an entry row of ~150 N/mm — well over
-# half of $K_v$ — where ours carry the shares printed above. Both spread a push at the footprint
-# edge over the neighbouring rows: the cross-section tire through its belt's bending and shear,
-# the ring through a beam on springs. The cross-section tire rings more (its dynamic /
+# half of $K_v$ — where ours carry the shares printed above. Both share a push at the footprint
+# edge between the entry row and its neighbours: the cross-section tire through its belt's
+# bending and shear, the ring through a beam on springs (notebook 04). The cross-section tire rings more (its dynamic /
 # quasi-static ratio, against the paper's 1870 / 1200 = 1.56). The tire from files gives the
 # cross-section's forces to round-off: the RM chain needs nothing but the files. What the linear
 # models cannot do — lose contact next to the cleat — notebook 08 adds.

@@ -239,6 +239,31 @@ def test_the_outside_reference_pattern_finds_issues_and_the_design_document():
         assert not OUTSIDE_REFERENCE.search(text), text
 
 
+#: Remarks on the project's past instead of its subject: its test runs, goals, costs or sessions.
+HISTORY_REMARK = re.compile(r"\bCI\b|\bthe goal\b|\bcost us\b|\bthis session\b|\bno network\b", re.IGNORECASE)
+
+
+def test_the_history_pattern_finds_remarks_on_the_past():
+    for text in ("CI runs this small grid", "(the goal: < 2 s)", "they cost us 1.5 s", "this session's code"):
+        assert HISTORY_REMARK.search(text), text
+    for text in ("the circle", "specific", "the goals of the design", "costs"):
+        assert not HISTORY_REMARK.search(text), text
+
+
+def test_the_chapters_speak_of_their_subject_not_of_the_project_s_past():
+    """A chapter teaches the method: no remarks on how the collection is tested, on goals or on costs
+    of the past (a measured time is a result and says what it measures)."""
+    chapters = sorted((REPO_ROOT / "notebooks").glob("[0-9][0-9]-*.py"))
+    assert len(chapters) > 10
+    offending = [
+        f"{path.name}:{k}: {line.strip()}"
+        for path in chapters
+        for k, line in enumerate(path.read_text(encoding="utf-8").splitlines(), start=1)
+        if HISTORY_REMARK.search(line)
+    ]
+    assert not offending, "remarks on the project's past:\n" + "\n".join(offending)
+
+
 def test_no_references_outside_the_repository():
     """Code, notebooks and docs speak of the project only: say what an issue or a document outside
     the repository said, or point to the file or the paper that holds it."""

@@ -405,6 +405,15 @@ def row_influence(static: Footprint, static_influence: np.ndarray) -> pd.DataFra
     )
 
 
+def edge_share(rows: pd.DataFrame, per_end: int = 2) -> float:
+    """The share of the footprint's static stiffness in its ``per_end`` outer rows at each end (the
+    rows of :func:`row_influence`): where a cleat entering or leaving the footprint pushes."""
+    h = rows["H(0) of the row (N/mm)"].to_numpy()
+    if not 1 <= per_end <= h.size // 2:
+        raise ValueError(f"per_end = {per_end}: valid range is 1 to {h.size // 2} (half of the {h.size} rows)")
+    return float((h[:per_end].sum() + h[-per_end:].sum()) / h.sum())
+
+
 def quasi_static_peak(
     tire: Tire, height: float, base: float, shape: str = "triangle", drum_radius: float = 1.25
 ) -> float:
@@ -416,3 +425,25 @@ def quasi_static_peak(
     h0 = model.fixed_hub_frfs(case, np.array([0.0])).H[:, 0].real
     road = cleat_input(static, 0.1, height, base, shape, distance=(-0.08, 0.1))
     return float(quasi_static_force(h0, road).max())
+
+
+def peak_sensitivity(
+    tire: Tire,
+    variants: dict[str, dict[str, float]],
+    height: float,
+    base: float,
+    shape: str = "triangle",
+    drum_radius: float = 1.25,
+) -> pd.Series:
+    """The quasi-static cleat peak (N, :func:`quasi_static_peak`) of a tire with each variant's overrides.
+
+    ``variants``: name -> overrides of the tire file (dotted names -> values in SI units, as
+    :meth:`TireModel.replace` takes them; ``{}`` the tire as it is). Which of a model's parameters
+    could move the peak to a target, one change at a time, all else as calibrated.
+    """
+    model = tire_model(tire)
+    peaks = {
+        name: quasi_static_peak(model.replace(**change) if change else model, height, base, shape, drum_radius)
+        for name, change in variants.items()
+    }
+    return pd.Series(peaks, name="quasi-static peak (N)")

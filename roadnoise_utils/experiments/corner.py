@@ -13,8 +13,11 @@ from dataclasses import dataclass
 
 import control
 import numpy as np
+import pandas as pd
 
+from ..analysis import resonance_peaks
 from ..repro import stages
+from ..response.modal_reduction import identify_modes
 from ..rm.fitting import FitSet
 from ..rm.realisation import assemble_fixed_hub
 from ..rm.simulation import ModalSections, modal_sections
@@ -170,3 +173,42 @@ def quarter_car_spectra(
         }
 
     return _spectra_stage(setup, test, lateral, compute)
+
+
+def hub_mode_peaks(
+    setup: CornerSetup, spectrum: RoadSpectrum, speed: float, band: tuple[float, float] = (40.0, 220.0)
+) -> pd.DataFrame:
+    """The paper's Fig. 14 reading: the peaks of the hub-acceleration ASD in ``band`` (Hz) and the tire's
+    vertical mode nearest each.
+
+    The ASD is the frequency-domain prediction on the 2D road (smooth, every 1 Hz), so its peaks
+    do not depend on a Welch estimate's variance; the modes are identified from the tire's
+    fixed-hub :math:`H_{tot}` (paper Fig. 4, step 1).
+
+    Returns
+    -------
+    DataFrame
+        One row per peak (numbered from 1): ``peak (Hz)``, ``ASD ((m/s²)/√Hz)`` (the prediction at
+        the peak), ``nearest vertical mode`` (its number) and ``mode (Hz, fixed hub)``;
+        ``attrs["freqs"]``, ``attrs["asd"]``: the prediction the peaks were found on.
+    """
+    lo, hi = band
+    if not 0.0 < lo < hi:
+        raise ValueError(f"band = {band}: valid range is 0 < low < high (Hz)")
+    freqs = np.arange(lo, hi + 1.0, 1.0)
+    asd = np.sqrt(setup.predicted(freqs, spectrum, speed)["a_hub"])
+    peaks, _ = resonance_peaks(freqs, asd, min_ratio=0.0)
+    visco = stages.frf_visco(setup.tire)
+    modes = identify_modes(visco.freqs, visco.H_tot).freqs
+    nearest = np.array([int(np.argmin(np.abs(modes - f))) for f in peaks], dtype=int)
+    table = pd.DataFrame(
+        {
+            "peak (Hz)": peaks,
+            "ASD ((m/s²)/√Hz)": np.interp(peaks, freqs, asd),
+            "nearest vertical mode": nearest + 1,
+            "mode (Hz, fixed hub)": modes[nearest] if peaks.size else np.zeros(0),
+        },
+        index=pd.Index(np.arange(1, peaks.size + 1), name="peak"),
+    )
+    table.attrs.update(freqs=freqs, asd=asd)
+    return table

@@ -41,14 +41,20 @@ def plot_moving_hub_scheme() -> plt.Figure:
 
 
 def plot_frf_pair(
-    freqs: np.ndarray, curves: dict[str, np.ndarray], ylabel: str, ax: plt.Axes | None = None, log: bool = True
+    freqs: np.ndarray,
+    curves: dict[str, np.ndarray],
+    ylabel: str,
+    ax: plt.Axes | None = None,
+    log: bool = True,
+    scale: float = 1.0,
 ) -> plt.Axes:
-    """Moduli of a few complex FRFs on one axis (first curve bold: the reference)."""
+    """Moduli of a few complex FRFs on one axis (first curve bold: the reference); ``scale`` takes the
+    curves' SI values to the axis' unit (e.g. 1e-3 for N/m to N/mm, the unit of every FRF figure)."""
     if ax is None:
         _, ax = plt.subplots(figsize=(8, 4))
     for k, (label, values) in enumerate(curves.items()):
         style = {"color": "k", "lw": 2.2} if k == 0 else {"ls": "--", "lw": 1.3}
-        (ax.semilogy if log else ax.plot)(freqs, np.abs(values), label=label, **style)
+        (ax.semilogy if log else ax.plot)(freqs, np.abs(values) * scale, label=label, **style)
     ax.set_xlabel("Frequency (Hz)")
     ax.set_ylabel(ylabel)
     ax.legend()

@@ -57,21 +57,39 @@ def plot_quarter_car_scheme(vehicle) -> plt.Figure:
 
 
 def plot_transmissibility(
-    freqs: np.ndarray, transmissibility: np.ndarray, bands: dict, ax: plt.Axes | None = None
+    freqs: np.ndarray,
+    transmissibility: np.ndarray,
+    bands: dict,
+    ax: plt.Axes | None = None,
+    paper: dict[str, float] | None = None,
+    ours: dict[str, float] | None = None,
 ) -> plt.Axes:
-    """Fig. 10 analogue: |a_mount / a_hub| with the paper's bands (``vehicle.FrequencyBand``) shaded."""
+    """Fig. 10 analogue: |a_mount / a_hub| with the paper's bands (``vehicle.FrequencyBand``) shaded.
+
+    ``paper`` and ``ours`` (band key -> level of :math:`|T|`): the paper's level of each band's
+    claim (dashed) and our statistic over the band (solid), drawn across the band. The legend
+    sits outside the axes, so it covers neither the curve nor the bands' labels.
+    """
     if ax is None:
-        _, ax = plt.subplots(figsize=(8, 4))
+        _, ax = plt.subplots(figsize=(9, 4))
     ax.plot(freqs, np.abs(transmissibility), "k", lw=1.8, label="quarter car (ours)")
-    for band, colour in zip(bands.values(), ["tab:blue", "tab:green", "tab:orange", "tab:purple"], strict=False):
+    colours = ["tab:blue", "tab:green", "tab:orange", "tab:purple"]
+    for (key, band), colour in zip(bands.items(), colours, strict=False):
         ax.axvspan(band.f_low, band.f_high, color=colour, alpha=0.12)
         ax.text(0.5 * (band.f_low + band.f_high), 1.9, band.label, ha="center", fontsize=8, color=colour)
+        span = (band.f_low, band.f_high)
+        if paper and key in paper:
+            ax.plot(
+                span, (paper[key],) * 2, color=colour, ls="--", lw=1.6, label=f"paper: {band.label} ({paper[key]:.2g})"
+            )
+        if ours and key in ours:
+            ax.plot(span, (ours[key],) * 2, color=colour, lw=2.4, label=f"ours: {band.statistic} |T| ({ours[key]:.2f})")
     ax.axhline(1.0, color="0.5", lw=0.7, ls=":")
     ax.set_ylim(0, 2.1)
     ax.set_xlim(0, 300)
     ax.set_xlabel("Frequency [Hz]")
     ax.set_ylabel("|a_upper mount / a_hub|")
-    ax.legend(loc="upper left")
+    ax.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize=8)
     return ax
 
 
@@ -103,4 +121,32 @@ def plot_spectra(
     ax.set_xlabel("Frequency (Hz)")
     ax.set_ylabel(ylabel)
     ax.legend()
+    return ax
+
+
+def plot_hub_modes(
+    freqs: np.ndarray, psd: np.ndarray, peaks, f_range: tuple[float, float] = (40.0, 220.0), n_peaks: int = 4
+) -> plt.Axes:
+    """Fig. 14 analogue: the hub-acceleration ASD of a time-domain run (``freqs``, ``psd``: the 3D road), the
+    frequency-domain prediction the ``peaks`` were found on (``experiments.corner.hub_mode_peaks``,
+    the 2D road) and its first ``n_peaks`` peaks marked on it with their nearest tire mode."""
+    ax = plot_spectra(
+        freqs, {"rough, 3D road (time domain)": psd}, "hub acceleration ASD ((m/s²)/√Hz)", f_range, log=True
+    )
+    f_pred, asd_pred = peaks.attrs["freqs"], peaks.attrs["asd"]
+    ax.semilogy(f_pred, asd_pred, "k--", lw=0.9, label="2D road, frequency domain (peaks found here)")
+    shown = peaks.head(n_peaks)
+    low, high = ax.get_ylim()
+    ax.set_ylim(low, high * 4.0)  # room above the highest peak for its label
+    ax.plot(shown["peak (Hz)"], shown["ASD ((m/s²)/√Hz)"], "kv", ms=6, label="its peaks")
+    for _, row in shown.iterrows():
+        ax.annotate(
+            f"mode {int(row['nearest vertical mode'])}\n{row['peak (Hz)']:.0f} Hz",
+            (row["peak (Hz)"], row["ASD ((m/s²)/√Hz)"]),
+            xytext=(0, 12),
+            textcoords="offset points",
+            ha="center",
+            fontsize=8,
+        )
+    ax.legend(fontsize=8)
     return ax

@@ -15,8 +15,10 @@ def plot_road_spectra(
     iso_classes: dict[str, float],
     ax: plt.Axes | None = None,
     measured: dict | None = None,
+    title: str = "Road spectra: targets (light), generated profiles (Welch) and the ISO 8608 classes (grey)",
 ) -> plt.Axes:
-    """Road displacement PSDs (m^3) vs wavenumber with the ISO 8608 class boundaries."""
+    """Road displacement PSDs (m^3) vs wavenumber with the ISO 8608 class boundaries; each generated
+    profile's estimate drawn over its (light, wide) target so a seed's scatter shows."""
     if ax is None:
         _, ax = plt.subplots(figsize=(8, 4.5))
     for name, g0 in iso_classes.items():
@@ -26,11 +28,11 @@ def plot_road_spectra(
     for (name, spectrum), colour in zip(spectra.items(), ["tab:red", "tab:blue", "tab:green"]):
         target = spectrum.psd(n)
         floor = min(floor, target[target > 0].min())
-        ax.loglog(n, target, lw=2, color=colour, label=f"{name} (target)")
+        ax.loglog(n, target, lw=4, color=colour, alpha=0.3, label=f"{name} (target)")
         if measured and name in measured:
             nm, gm = measured[name]
             shown = (nm > 0) & (nm <= n.max())
-            ax.loglog(nm[shown], gm[shown], lw=0.8, color=colour, alpha=0.7, label=f"{name} (generated, Welch)")
+            ax.loglog(nm[shown], gm[shown], lw=0.9, color=colour, label=f"{name} (generated, Welch)")
     # the targets' band sets the scale, not the estimate's leakage past the shortest wavelength
     top = max(iso_classes.values()) * (n[0] / 0.1) ** -2.0
     ax.set_ylim(floor / 100.0, top * 10.0)
@@ -38,6 +40,7 @@ def plot_road_spectra(
     ax.text(1 / 0.05, ax.get_ylim()[1], " 5 cm", va="top", fontsize=8)
     ax.set_xlabel("wavenumber n (cycles/m)")
     ax.set_ylabel("displacement PSD G(n) (m^3)")
+    ax.set_title(title)
     ax.legend(fontsize=7)
     return ax
 

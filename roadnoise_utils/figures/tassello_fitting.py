@@ -23,14 +23,13 @@ def plot_order_scan(scans: dict[str, pd.DataFrame], tolerance: float = 0.01, ax:
 
 
 def plot_fit(freqs: np.ndarray, target: np.ndarray, fitted: np.ndarray, title: str) -> plt.Figure:
-    """Fig. 6 analogue: target (FEA) and identified FRF, modulus (N/m) and phase."""
+    """Fig. 6 analogue: target (FEA) and identified FRF (N/m), drawn as modulus (N/mm) and phase."""
     fig, (a1, a2) = plt.subplots(2, 1, figsize=(8, 5.5), sharex=True)
-    a1.plot(freqs, np.abs(target), "k", lw=2.0, label="target (FEA)")
-    a1.plot(freqs, np.abs(fitted), "--", color="tab:red", label="identified")
+    a1.plot(freqs, np.abs(target) / 1e3, "k", lw=2.0, label="target (FEA)")
+    a1.plot(freqs, np.abs(fitted) / 1e3, "--", color="tab:red", label="identified")
     a2.plot(freqs, np.degrees(np.angle(target)), "k", lw=2.0)
     a2.plot(freqs, np.degrees(np.angle(fitted)), "--", color="tab:red")
-    a1.set_ylabel("|H_i| (N/m)")
-    a1.ticklabel_format(axis="y", style="sci", scilimits=(4, 4))
+    a1.set_ylabel("|H_i| (N/mm)")
     a2.set_ylabel("phase (deg)")
     a2.set_xlabel("Frequency (Hz)")
     a1.legend()

@@ -159,11 +159,10 @@ def plot_cavity_frfs(result) -> plt.Figure:
     """|H_tot| and |G_H| of the fixed-hub tire without and with its air cavity, the loaded doublet marked."""
     fig, axes = plt.subplots(1, 2, figsize=(10, 3.8), sharex=True)
     f = result.plain.freqs
-    for ax, name, label in zip(axes, ("H_tot", "G_H"), ("|H_tot| (N/m)", "|G_H| (N/m)")):
-        ax.semilogy(
-            f, np.abs(getattr(result.plain, name)), color="0.4", lw=1.0, label="without the cavity (the paper's model)"
-        )
-        ax.semilogy(f, np.abs(getattr(result.with_cavity, name)), color="tab:red", lw=1.2, label="with the cavity")
+    for ax, name, label in zip(axes, ("H_tot", "G_H"), ("|H_tot| (N/mm)", "|G_H| (N/mm)")):
+        plain, coupled = np.abs(getattr(result.plain, name)) / 1e3, np.abs(getattr(result.with_cavity, name)) / 1e3
+        ax.semilogy(f, plain, color="0.4", lw=1.0, label="without the cavity (the paper's model)")
+        ax.semilogy(f, coupled, color="tab:red", lw=1.2, label="with the cavity")
         for k, f_mode in enumerate(result.loaded_doublet):
             ax.axvline(
                 f_mode, color="tab:blue", ls=":", lw=0.8, label="loaded cavity: fore-aft, vertical" if k == 0 else None
@@ -203,9 +202,9 @@ def plot_rolling_cavity(result) -> plt.Figure:
     doublet of each speed marked in its colour (``result``: :class:`.experiments.cavity.RollingCavityFRFs`)."""
     fig, axes = plt.subplots(1, 2, figsize=(10, 3.8), sharex=True)
     colours = plt.cm.viridis(np.linspace(0.0, 0.85, len(result.speeds_kmh)))
-    for ax, values, label in zip(axes, (result.H_tot, result.G_H), ("|H_tot| (N/m)", "|G_H| (N/m)")):
+    for ax, values, label in zip(axes, (result.H_tot, result.G_H), ("|H_tot| (N/mm)", "|G_H| (N/mm)")):
         for speed, response, doublet, colour in zip(result.speeds_kmh, values, result.doublets, colours):
-            ax.semilogy(result.freqs, np.abs(response), color=colour, lw=1.2, label=f"{speed:.0f} km/h")
+            ax.semilogy(result.freqs, np.abs(response) / 1e3, color=colour, lw=1.2, label=f"{speed:.0f} km/h")
             for f_mode in doublet:
                 ax.axvline(f_mode, color=colour, ls=":", lw=0.9)
         ax.set_ylabel(label)

@@ -18,7 +18,7 @@ from ..analysis import band_errors, distinct_peaks, peak_comparison, relative_rm
 from ..experiments.bands import cleat_chain
 from ..experiments.cavity import cavity_conditions, load_exponent, split_against_load
 from ..experiments.cleat import CleatTest, cleat_test
-from ..experiments.corner import PAPER_CAR, corner_setup, quarter_car_spectra
+from ..experiments.corner import PAPER_CAR, corner_setup, hub_mode_peaks, quarter_car_spectra
 from ..experiments.moving_hub import moving_hub_check
 from ..experiments.one_sided_cleat import OneSidedCleatTest, one_sided_cleat_test
 from ..experiments.road import road_test_conditions
@@ -166,9 +166,7 @@ def _resolution(model: str) -> float:
 
 def _fig14_modes(model: str) -> float:
     setup, test = corner_setup(PAPER_CAR, tire_of(model, "check")), road_test_conditions()
-    f = np.arange(40.0, 221.0, 1.0)
-    psd = setup.predicted(f, test.spectra()["rough"], test.speed)["a_hub"]
-    return float(resonance_peaks(f, np.sqrt(psd), min_ratio=0.0)[0].size)
+    return float(len(hub_mode_peaks(setup, test.spectra()["rough"], test.speed)))
 
 
 def _hub_rms(model: str, texture: str) -> float:

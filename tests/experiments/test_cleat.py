@@ -67,3 +67,22 @@ def test_rm_chain_matches_the_fe_model(tire, speed_kmh):
     check = ru.experiments.cleat_test(tire, conditions=conditions, fe_reference=True).fe_reference
     assert abs(check.peak_difference) < 0.01
     assert check.rms_difference < 0.02
+
+
+def test_edge_share_sums_the_outer_rows_at_both_ends():
+    import pandas as pd
+
+    rows = pd.DataFrame({"H(0) of the row (N/mm)": [1.0, 2.0, 3.0, 4.0, 5.0, 6.0]})
+    assert cleat.edge_share(rows) == pytest.approx((1 + 2 + 5 + 6) / 21, rel=1e-15)
+    assert cleat.edge_share(rows, per_end=3) == pytest.approx(1.0, rel=1e-15)
+    with pytest.raises(ValueError, match="per_end = 4: valid range is 1 to 3"):
+        cleat.edge_share(rows, per_end=4)
+
+
+def test_peak_sensitivity_is_the_peak_of_each_variant_alone(coarse_tire):
+    """Each variant's peak is quasi_static_peak of the tire with that change only; ``{}`` is the tire as it is."""
+    change = {"operating.inflation_pressure": 2.6e5}
+    peaks = cleat.peak_sensitivity(coarse_tire, {"as it is": {}, "2.6 bar": change}, 0.015, 0.015)
+    assert peaks["as it is"] == cleat.quasi_static_peak(coarse_tire, 0.015, 0.015)
+    assert peaks["2.6 bar"] == cleat.quasi_static_peak(coarse_tire.replace(**change), 0.015, 0.015)
+    assert peaks["2.6 bar"] != peaks["as it is"]

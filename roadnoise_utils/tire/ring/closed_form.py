@@ -39,6 +39,17 @@ def ring_parameters(spec: TireSpec) -> RingParameters:
     )
 
 
+def edge_zone_wavenumber(spec: TireSpec) -> float:
+    r"""The belt's wavenumber on the tread springs (1/m), :math:`\beta = (k_{tread}\,b / 4EI)^{1/4}`.
+
+    The belt on the tread springs is a beam on an elastic foundation: its response to a load at
+    the footprint's edge decays as :math:`e^{-\beta s}\cos\beta s` (Hetenyi), so the footprint's
+    stiffness sits in an edge zone :math:`1/\beta` deep.
+    """
+    foundation = spec.tread.normal_stiffness_per_area * spec.geometry.belt_width  # N/m per m of belt
+    return float((foundation / (4 * spec.belt.bending_stiffness)) ** 0.25)
+
+
 def single_ring_spec(spec: TireSpec, n_elements: int | None = None) -> TireSpec:
     """``spec`` reduced to one ring: one strip, no sidewall mass, no crown (tread is contact-only)."""
     changes = {"mesh.n_strips": 1, "foundation.sidewall_mass": 0.0, "geometry.crown_drop": 0.0}

@@ -291,7 +291,7 @@ def build_fet(spec: TireSpec) -> FETModel:
     """
     if not isinstance(spec, TireSpec):
         raise TypeError(
-            f"build_fet builds the ring model from a ring tire file ([tire] model = \"ring\"); got "
+            f'build_fet builds the ring model from a ring tire file ([tire] model = "ring"); got '
             f"{type(spec).__name__} ([tire] model = {getattr(spec, 'model', None)!r}: ask its tire model, ru.tire_model)"
         )
     mesh = build_mesh(spec)

@@ -40,3 +40,16 @@ def test_ring_needs_the_pressure_load_stiffness(tire, monkeypatch):
     monkeypatch.setattr(elements, "pressure_load_stiffness", lambda pb: 0 * original(pb))
     table = ru.ring_check(tire, n_max=4, n_elements=120)
     assert table["rel_error"].abs().loc[2:].min() > 0.02
+
+
+def test_the_edge_zone_wavenumber_is_the_beam_on_springs_closed_form():
+    """beta = (k b / 4 EI)^(1/4): eight times the bending stiffness, beta / 8^(1/4); sixteen times the
+    tread stiffness, twice beta."""
+    from roadnoise_utils.tire.ring.closed_form import edge_zone_wavenumber
+
+    spec = ru.load_tire("165_65R14")
+    beta = edge_zone_wavenumber(spec)
+    stiffer_belt = spec.replace(**{"belt.bending_stiffness": 8 * spec.belt.bending_stiffness})
+    stiffer_tread = spec.replace(**{"tread.normal_stiffness_per_area": 16 * spec.tread.normal_stiffness_per_area})
+    assert edge_zone_wavenumber(stiffer_belt) == pytest.approx(beta / 8**0.25, rel=1e-12)
+    assert edge_zone_wavenumber(stiffer_tread) == pytest.approx(2 * beta, rel=1e-12)
