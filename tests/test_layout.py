@@ -16,7 +16,7 @@ from roadnoise_utils.repro.paths import REPO_ROOT
 
 #: Layers in the order the data flows; a module may import from its own layer or an earlier one.
 LAYERS = [
-    ["analysis", "guards", "repro.paths", "repro.cache"],
+    ["analysis", "guards", "repro.paths", "repro.cache", "repro.provenance"],
     ["tire"],
     ["road"],
     ["response"],
@@ -29,7 +29,7 @@ LAYERS = [
     ["experiments"],
     ["repro.claims", "repro.collection", "repro.evaluators"],
     ["figures"],
-    ["repro.reproduce", "repro", "__init__", "__main__"],
+    ["repro.reproduce", "repro.book", "repro", "__init__", "__main__"],
 ]
 MAX_LINES = 500
 
@@ -219,7 +219,7 @@ OUTSIDE_REFERENCE = re.compile(r"\b[Ii]ssues? #?\d+|\bDESIGN\b")
 
 def _project_texts() -> list[Path]:
     """The files that speak of the project: the package, the tests, the notebooks' sources, the
-    benchmarks, the README and the data files; this file, which names the pattern, left out."""
+    benchmarks, the README, the book's pages and the data files; this file, which names the pattern, left out."""
     paths = [
         *PACKAGE_DIR.rglob("*.py"),
         *(REPO_ROOT / "tests").rglob("*.py"),
@@ -227,6 +227,7 @@ def _project_texts() -> list[Path]:
         *(REPO_ROOT / "benchmarks").rglob("*.py"),
         REPO_ROOT / "conftest.py",
         REPO_ROOT / "README.md",
+        *(REPO_ROOT / "book").rglob("*.md"),
         *(REPO_ROOT / "data").rglob("*.toml"),
     ]
     return sorted(path for path in paths if path.is_file() and path.resolve() != Path(__file__).resolve())

@@ -1,8 +1,8 @@
 """The map of the collection (``data/collection.toml``): notebook table for the README and notebook 00.
 
 ``python -m roadnoise_utils --print notebook-table`` prints the Markdown table that the README
-carries between its ``<!-- notebook-table -->`` markers, ``--print gallery`` the figure gallery
-between its ``<!-- gallery -->`` markers (tests keep them identical).
+carries between its ``<!-- notebook-table -->`` markers, ``--print gallery`` the figure gallery of
+the book's gallery page between its ``<!-- gallery -->`` markers (tests keep them identical).
 """
 
 from __future__ import annotations
@@ -52,8 +52,8 @@ def markdown_table(link_prefix: str = "notebooks/") -> str:
 def gallery_markdown(index_csv: Path | None = None, prefix: str = "figures/", columns: int = 3) -> str:
     """A Markdown/HTML table of our figures that mirror the paper's, one per paper figure, in order.
 
-    Built from the ``index.csv`` the reproduction writes; the README carries it between its
-    ``<!-- gallery -->`` markers (a test keeps the two identical).
+    Built from the ``index.csv`` the reproduction writes; the book's gallery page (``book/gallery.md``)
+    carries it between its ``<!-- gallery -->`` markers (a test keeps the two identical).
     """
     index_csv = index_csv or figure_dir() / "index.csv"
     record_read(index_csv)

@@ -44,7 +44,7 @@ from nbclient.exceptions import CellExecutionError, CellTimeoutError, DeadKernel
 from threadpoolctl import threadpool_limits
 from tqdm.auto import tqdm
 
-from . import claims
+from . import claims, provenance
 from .collection import gallery_markdown, markdown_table, notebooks
 from .kernel_client import PatientClient
 from .paths import REPO_ROOT, figure_dir
@@ -320,7 +320,7 @@ def reproduce(
         shutil.rmtree(staging, ignore_errors=True)
         raise
     for path, nb in executed.items():
-        _write_notebook(nb, path)
+        _write_notebook(provenance.stamp(nb), path)
     return rows, table
 
 
@@ -354,7 +354,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument(
         "--print",
         choices=["notebook-table", "gallery"],
-        help="only print the README's generated notebook table or figure gallery",
+        help="only print the README's generated notebook table or the book's figure gallery",
     )
     args = parser.parse_args(argv)
     if args.print:

@@ -26,8 +26,8 @@ times the kernel), and checked as it is read: the memory is the record's time, t
 force arrays plus a fixed ~40 MB (the impulse responses and one block's spectra), whatever the
 record's length.
 
-**Speed** (``benchmarks/bench_road_simulation.py``, 195/65 R15, 2-D road, 9.6 kHz, README
-"Performance"): at 2e6 samples 0.24-0.84 s and 90 MB against 6.8-32.8 s and 2.3 GB per tassello. It is
+**Speed** (``benchmarks/bench_road_simulation.py``, 195/65 R15, 2-D road, 9.6 kHz, the book's
+"Performance" page): at 2e6 samples 0.24-0.84 s and 90 MB against 6.8-32.8 s and 2.3 GB per tassello. It is
 an explicit function, not a path :func:`.simulation.simulate` takes by itself: ``simulate`` gets
 the tasselli's inputs, which this never forms.
 """

@@ -247,7 +247,7 @@ def simulate(system: control.StateSpace | ModalSections, road: RoadInput) -> Sim
     Zero initial state; the input varies linearly between samples (FOH), exactly as
     python-control's ``forced_response``. For a road flowing through the footprint,
     :func:`.aggregated.road_hub_force` gives the same force from the road itself, without forming
-    the inputs (~30x faster and ~25x less memory at 2e6 samples; README "Performance").
+    the inputs (~30x faster and ~25x less memory at 2e6 samples; the book's "Performance" page).
     """
     if not isinstance(road, RoadInput):
         raise ValueError(f"road must be a RoadInput (t, u[input, sample]), got {type(road).__name__}")

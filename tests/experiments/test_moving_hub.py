@@ -9,7 +9,9 @@ import roadnoise_utils as ru
 
 
 @pytest.mark.parametrize("tire", ["195_65R15", "195_65R15_cross_section"])
-@pytest.mark.filterwarnings("ignore:no order in")  # the 195 cross-section's shoulder tasselli: documented (README)
+@pytest.mark.filterwarnings(
+    "ignore:no order in"
+)  # the 195 cross-section's shoulder tasselli: documented (the book's reference, "The finite-element tire")
 def test_moving_hub_matches_fe_with_a_free_hub(tire):
     """The fitted RM moving hub (Eq. 5-7) against the FE tire with its hub free: for the ring a
     solve with every belt DOF, for the cross-section tire the exact two-port of its direct

@@ -16,6 +16,9 @@ from roadnoise_utils.repro import collection, reproduce
 from roadnoise_utils.repro.paths import REPO_ROOT
 
 README = (REPO_ROOT / "README.md").read_text()
+#: The reference pages of the book (your own tire, road, car, formats, ...): the snippets the README sends users to.
+REFERENCE = "\n".join(p.read_text() for p in sorted((REPO_ROOT / "book").rglob("*.md")))
+GALLERY = (REPO_ROOT / "book" / "gallery.md").read_text()
 
 
 @pytest.mark.parametrize("notebook", sorted(p.name for p in (REPO_ROOT / "notebooks").glob("*.ipynb")))
@@ -25,10 +28,10 @@ def test_every_notebook_has_a_parameters_cell(notebook):
     assert len(tagged) == 1 and tagged[0].cell_type == "code"
 
 
-def test_readme_gallery_is_generated_and_every_figure_exists():
-    block = re.search(r"<!-- gallery -->\n(.*?)\n<!-- /gallery -->", README, re.S)
+def test_the_book_gallery_is_generated_and_every_figure_exists():
+    block = re.search(r"<!-- gallery -->\n(.*?)\n<!-- /gallery -->", GALLERY, re.S)
     assert block and block.group(1).strip() == collection.gallery_markdown().strip()
-    images = re.findall(r'src="(figures/[^"]+)"', README)
+    images = re.findall(r'src="(figures/[^"]+)"', GALLERY)
     assert len(images) >= 12
     # every image is in the repository and is what reproduction writes from the committed notebooks
     produced = set()
@@ -40,45 +43,45 @@ def test_readme_gallery_is_generated_and_every_figure_exists():
         assert image.removeprefix("figures/") in produced, image
 
 
-def test_readme_own_road_snippet(tire, fet, flat):
+def test_the_book_s_own_road_snippet(tire, fet, flat):
     static = flat
     tire_F = ru.stages.assemble_fixed_hub("165_65R14")
-    snippet = README.split("**Your own road.**", 1)[1].split("```python", 1)[1].split("```", 1)[0]
+    snippet = REFERENCE.split("**Your own road.**", 1)[1].split("```python", 1)[1].split("```", 1)[0]
     namespace = {"ru": ru, "static": static, "tire_F": tire_F}
-    exec(compile(snippet, "README", "exec"), namespace)  # the README's code, as written
+    exec(compile(snippet, "book", "exec"), namespace)  # the book's code, as written
     force = namespace["force"].force
     assert force.size > 1000 and np.all(np.isfinite(force)) and np.std(force) > 0
 
 
-def test_readme_exchange_formats_snippet(flat, tmp_path, monkeypatch):
-    """The README's UFF 58 and OpenCRG walk, as written, on a CRG road of the rough texture."""
+def test_the_book_s_exchange_formats_snippet(flat, tmp_path, monkeypatch):
+    """The book's UFF 58 and OpenCRG walk, as written, on a CRG road of the rough texture."""
     monkeypatch.chdir(tmp_path)
     spectrum = ru.textures.load_texture("rough")
     ru.road.save_crg("my_road.crg", ru.textures.generate_field(spectrum, 51.2, 0.005, np.array([-0.08, 0.0, 0.08]), 7))
-    snippet = README.split("**Exchange formats.**", 1)[1].split("```python", 1)[1].split("```", 1)[0]
+    snippet = REFERENCE.split("**Exchange formats.**", 1)[1].split("```python", 1)[1].split("```", 1)[0]
     namespace = {"ru": ru, "static": flat}
-    exec(compile(snippet, "README", "exec"), namespace)  # the README's code, as written
+    exec(compile(snippet, "book", "exec"), namespace)  # the book's code, as written
     visco, back = namespace["visco"], namespace["back"]
     assert back.H.shape == visco.H.shape and np.allclose(back.H, visco.H, rtol=1e-11, atol=0)
     assert namespace["u"].u.shape[0] == flat.tasselli.n and np.std(namespace["u"].u) > 0
     assert ru.road.crg_modifiers("rough.crg") == {} and (tmp_path / "165_65R14.uff").stat().st_size > 0
 
 
-def test_readme_own_car_snippet():
-    """The README's whole-car walk, as written (10 s at 120 km/h, four corners): every output's spectrum
+def test_the_book_s_own_car_snippet():
+    """The book's whole-car walk, as written (10 s at 120 km/h, four corners): every output's spectrum
     and the axles' coherence come back finite."""
-    snippet = README.split("**Your own car", 1)[1].split("```python", 1)[1].split("```", 1)[0]
+    snippet = REFERENCE.split("**Your own car", 1)[1].split("```python", 1)[1].split("```", 1)[0]
     namespace = {"ru": ru}
-    exec(compile(snippet, "README", "exec"), namespace)  # the README's code, as written
+    exec(compile(snippet, "book", "exec"), namespace)  # the book's code, as written
     run = namespace["run"]
     assert run.spectra.psd["a_hub_FL"].shape == run.spectra.freqs.shape and len(run.spectra.psd) == 18
     assert all(np.all(np.isfinite(v)) for v in run.spectra.psd.values())
     assert 0.0 <= run.spectra.force_coherence["front"].min() and run.spectra.force_coherence["front"].max() <= 1.0
 
 
-def test_readme_own_tire_snippet():
-    """The README's Python walk through the stages, as written, on the paper's tire file."""
-    snippet = README.split("**Your own tire.**", 1)[1].split("```python", 1)[1].split("```", 1)[0]
+def test_the_book_s_own_tire_snippet():
+    """The book's Python walk through the stages, as written, on the paper's tire file."""
+    snippet = REFERENCE.split("**Your own tire.**", 1)[1].split("```python", 1)[1].split("```", 1)[0]
     namespace = {}
     exec(compile(snippet.replace('"my_tire.toml"', '"165_65R14"'), "README", "exec"), namespace)
     force = namespace["force"].force
@@ -86,8 +89,8 @@ def test_readme_own_tire_snippet():
     assert np.all(np.isfinite(force)) and force.max() > 100.0
 
 
-def test_readme_own_tire_instructions(tmp_path):
-    """The README's new-tire recipe: copy a tire file, edit it, run notebook 01 on it with papermill."""
+def test_the_book_s_own_tire_instructions(tmp_path):
+    """The book's new-tire recipe: copy a tire file, edit it, run notebook 01 on it with papermill."""
     text = (REPO_ROOT / "data" / "tires" / "165_65R14.toml").read_text()
     my_tire = tmp_path / "my_tire.toml"
     my_tire.write_text(text.replace("inflation_pressure = 2.3e5", "inflation_pressure = 2.6e5"))
