@@ -369,3 +369,7 @@ _ = interact(
     speed_kmh=FloatSlider(value=cleat.dynamic_kmh, min=5.0, max=80.0, step=5.0, continuous_update=False),
     height_mm=FloatSlider(value=cleat.height * 1e3, min=2.0, max=25.0, step=1.0, continuous_update=False),
 )
+
+# %% [markdown]
+# **Next:** notebook 09 builds the second FE tire from its cross-section, whose one-sided runs
+# this chapter drew beside the ring's; notebook 00's report judges both against the measured test.

@@ -187,4 +187,5 @@ def show_band(band=400.0):
 _ = interact(show_band, band=FloatSlider(value=400.0, min=150.0, max=400.0, step=50.0, continuous_update=False))
 
 # %% [markdown]
-# **Back to:** notebook 00 for the map of the collection and the reproduction report.
+# **Next:** notebook 11 puts four RM tires under the whole car of Eq. 8 (the paper's 0-250 Hz
+# chain); notebook 00 maps the collection and its report.

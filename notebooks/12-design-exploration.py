@@ -196,3 +196,7 @@ print("steps between them (elements):", ", ".join(f"{d:.1f}" for d in np.diff(le
 #   (`"layers.tread.youngs_modulus"`, `"operating.inflation_pressure"`, ...; about 10x the cost of
 #   a ring design).
 # * **Interrupted?** Run the same call again: finished designs come from the cache.
+
+# %% [markdown]
+# **Next:** notebook 13 runs the chain on every tire model side by side, a tire read from files
+# among them.

@@ -1,9 +1,11 @@
-"""Which source a notebook's stored outputs come from: a digest of its cells, stamped by the reproduction.
+"""Which source a notebook's stored outputs come from: a digest of its code, stamped by the reproduction.
 
 The reproduction executes each notebook and writes it back with ``metadata.roadnoise.source_digest``,
-the SHA-256 of its cells' types and sources at execution. A notebook edited since (its jupytext twin
-synced into it with the old outputs kept) no longer matches its stamp: the book, built from the
-stored outputs without executing anything, refuses it rather than show outputs of another source.
+the SHA-256 of its code cells' sources, in order, at execution. A notebook whose code was edited
+since (its jupytext twin synced into it with the old outputs kept) no longer matches its stamp:
+the book, built from the stored outputs without executing anything, refuses it rather than show
+outputs of another source. The prose (markdown cells) is not in the digest: it computes nothing,
+so a corrected sentence leaves every output true.
 """
 
 from __future__ import annotations
@@ -19,9 +21,9 @@ METADATA_KEY = "roadnoise"
 
 
 def source_digest(nb: nbformat.NotebookNode) -> str:
-    """SHA-256 (hex) of the notebook's cells, their types and sources in order (outputs and metadata excluded)."""
-    cells = [[cell.cell_type, cell.source] for cell in nb.cells]
-    return hashlib.sha256(json.dumps(cells, ensure_ascii=False).encode("utf-8")).hexdigest()
+    """SHA-256 (hex) of the notebook's code cells' sources in order (prose, outputs and metadata excluded)."""
+    code = [cell.source for cell in nb.cells if cell.cell_type == "code"]
+    return hashlib.sha256(json.dumps(code, ensure_ascii=False).encode("utf-8")).hexdigest()
 
 
 def stamp(nb: nbformat.NotebookNode) -> nbformat.NotebookNode:
