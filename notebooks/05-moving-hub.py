@@ -96,6 +96,7 @@ ru.figures.moving_hub.plot_frf_pair(
     "|G_H| (N/mm)",
     scale=1e-3,
 )
+plt.title(f"G_H (Eq. 6) of the {tire.name}: the direct FE hub FRF and its rational fit")
 plt.show()
 
 # %% [markdown]
@@ -146,6 +147,7 @@ if fe_check:
         ax=axes[1],
         scale=1e-3,
     )
+    fig.suptitle("The moving hub on its suspension: the FE tire with its hub free against the RM model (Eq. 5-7)")
     plt.show()
 
 # %%

@@ -289,7 +289,7 @@ print(
 
 # %%
 # The cleat test with contact loss on both tire models, with the measured peaks
-ax = ru.figures.contact_loss.plot_contact_runs(
+ru.figures.contact_loss.plot_contact_runs(
     {
         f"ring tire ({tire_name}), quasi-static": test.quasi_static,
         f"ring tire, {cleat.dynamic_kmh:.0f} km/h": test.dynamic,
@@ -299,10 +299,9 @@ ax = ru.figures.contact_loss.plot_contact_runs(
     {},
     title="one-sided contact on both tire models",
     paper=measured,
+    raw={"cross-section tire, raw": section_raw},
+    x_range=(-0.15, 0.4),
 )
-ax.plot(section_raw.distance, section_raw.hub_force, color="0.7", lw=0.4, zorder=0, label="cross-section tire, raw")
-ax.legend(fontsize=8)
-ax.set_xlim(-0.15, 0.4)
 plt.show()
 
 # %%

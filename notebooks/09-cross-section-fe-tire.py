@@ -221,6 +221,7 @@ ax = ru.figures.fe_tire_model.plot_htot(
     footprint, f_max=400.0, label="H_tot, cross-section model", paper={"paper: first vertical resonance": f_paper}
 )
 ax.plot(ring_frf.freqs, np.abs(ring_frf.H_tot) / 1e3, "--", label="H_tot, ring model")
+ax.set_title(f"Fig. 5 analogue: the whole-footprint FRF of the two tire models of the {spec.name}")
 ax.legend()
 plt.show()
 
@@ -279,9 +280,8 @@ print(f"G_H:   relative RMS difference {ru.analysis.relative_rms_error(synthesis
 print(f"contact points: largest difference {points_error:.1e} of the largest point FRF")
 
 # %% [markdown]
-# What remains is the inertia of what the residual flexibility stands for, growing as
-# $(f/f_{free})^2$ (bounded in `tests/tire/cross_section/test_modal.py`). The paper's procedure
-# on this tire, against its direct viscoelastic FRFs:
+# What remains is the inertia the residual flexibility leaves out, growing as $(f/f_{free})^2$
+# (bounded in `tests/tire/cross_section/test_modal.py`). The paper's procedure, against the direct FRFs:
 
 # %%
 # NBVAL_CHECK_OUTPUT

@@ -20,13 +20,18 @@ def plot_contact_runs(
     ax: plt.Axes | None = None,
     title: str = "",
     paper: dict[str, float] | None = None,
+    raw: dict[str, ContactRun] | None = None,
+    x_range: tuple[float, float] | None = None,
 ) -> plt.Axes:
     """Fig. 8 analogue: hub force vs distance, one-sided contact (solid) and the linear chain (dashed).
 
-    ``paper``: the measured values (label -> N), drawn as reference lines.
+    ``paper``: the measured values (label -> N), drawn as reference lines; ``raw``: runs as stepped
+    (before the band limit), thin and grey behind the others; ``x_range``: the distance shown (m).
     """
     if ax is None:
         _, ax = plt.subplots(figsize=(9, 4.5))
+    for label, run in (raw or {}).items():
+        ax.plot(run.distance, run.hub_force, color="0.7", lw=0.4, zorder=0, label=label)
     colours = ["tab:blue", "tab:red", "tab:green", "tab:orange"]
     for (label, run), colour in zip(contact.items(), colours):
         ax.plot(run.distance, run.hub_force, "-", color=colour, lw=1.6, label=label)
@@ -37,6 +42,8 @@ def plot_contact_runs(
     ax.set_xlabel("distance travelled (m); 0 = cleat leading edge under the axle")
     ax.set_ylabel("hub force minus the static load (N)")
     ax.set_title(title)
+    if x_range is not None:
+        ax.set_xlim(*x_range)
     ax.legend(fontsize=8)
     if paper:
         paper_lines(ax, paper, unit="N")

@@ -69,12 +69,13 @@ def plot_superposition(
         k = frf.freqs <= f_max
         ax.plot(frf.freqs[k], np.abs(frf.H_sum[k]) / 1e3, style, lw=1.4, label=f"Σ H_i, {label} (MIMO)")
     ax.set_xlim(0, f_max)
-    ax.set_ylim(bottom=0)
     ax.set_xlabel("Frequency (Hz)")
     ax.set_ylabel("|H| (N/mm)")
-    ax.legend()
     if paper:
         paper_lines(ax, paper, axis="x", unit="Hz")
+    top = max(np.abs(visco.H_tot[keep]).max(), *(np.abs(f.H_sum[f.freqs <= f_max]).max() for f in modal.values()))
+    ax.set_ylim(0, 1.6 * top / 1e3)  # the legend above the curves, covering none of them
+    ax.legend(loc="upper right", fontsize=7)
     return ax
 
 
