@@ -19,13 +19,13 @@ Public entry points::
 
 The package, one folder per stage, data flowing one way:
 
-* :mod:`.tire` — spec, the ring FE model, statics, tasselli (stages 1-2)
-* :mod:`.response` — direct FRFs, modes, modal reduction, FE reference solves (stages 3-5)
+* :mod:`.tire` — the tire-model interface, tasselli, rubber, cavity; one folder per model (stages 1-5)
+* :mod:`.response` — damping identification and the modal model, band limits, UFF 58 (stages 3-5)
 * :mod:`.rm` — fits, state space (fixed and moving hub), simulation (stages 6-9)
 * :mod:`.road` — tassello inputs from cleats, textures and road files (stage 11)
 * :mod:`.vehicle` — quarter car, corner coupling, spectra (stages 10, 12)
 * :mod:`.experiments` — the paper's tests, reading ``data/conditions`` once
-* :mod:`.figures` — one module per notebook
+* :mod:`.figures` — the chapters' figure modules
 * :mod:`.repro` — paths, the stage cache, :mod:`.stages` (cached stage functions), claims,
   the collection, the reproduce command (``python -m roadnoise_utils``)
 """

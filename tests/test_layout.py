@@ -251,16 +251,18 @@ def test_the_history_pattern_finds_remarks_on_the_past():
         assert not HISTORY_REMARK.search(text), text
 
 
-def test_the_chapters_speak_of_their_subject_not_of_the_project_s_past():
-    """A chapter teaches the method: no remarks on how the collection is tested, on goals or on costs
-    of the past (a measured time is a result and says what it measures)."""
+def test_the_chapters_and_the_book_speak_of_their_subject_not_of_the_project_s_past():
+    """A chapter or a book page teaches the method: no remarks on how the collection is tested, on goals
+    or on costs of the past (a measured time is a result and says what it measures; the scripts
+    under ``.ci/`` are named as files)."""
     chapters = sorted((REPO_ROOT / "notebooks").glob("[0-9][0-9]-*.py"))
-    assert len(chapters) > 10
+    pages = sorted((REPO_ROOT / "book").rglob("*.md"))
+    assert len(chapters) > 10 and len(pages) > 10
     offending = [
         f"{path.name}:{k}: {line.strip()}"
-        for path in chapters
+        for path in [*chapters, *pages]
         for k, line in enumerate(path.read_text(encoding="utf-8").splitlines(), start=1)
-        if HISTORY_REMARK.search(line)
+        if HISTORY_REMARK.search(line.replace(".ci/", ""))
     ]
     assert not offending, "remarks on the project's past:\n" + "\n".join(offending)
 

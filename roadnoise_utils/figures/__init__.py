@@ -1,4 +1,4 @@
-"""The collection's figures, one module per notebook (as ``kf_book/*_internal.py``), shared helpers in ``common``.
+"""The collection's figures, a module per chapter (notebooks 13 and 14 reuse the others'), shared helpers in ``common``.
 
 Each figure mirrors a figure of the paper where there is one (same axes and units, paper units
 at this edge only) and draws the paper's own numbers as labelled reference lines

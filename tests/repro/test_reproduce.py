@@ -46,7 +46,7 @@ def test_the_book_gallery_is_generated_and_every_figure_exists():
 def test_the_book_s_own_road_snippet(tire, fet, flat):
     static = flat
     tire_F = ru.stages.assemble_fixed_hub("165_65R14")
-    snippet = REFERENCE.split("**Your own road.**", 1)[1].split("```python", 1)[1].split("```", 1)[0]
+    snippet = REFERENCE.split("# Your own road\n", 1)[1].split("```python", 1)[1].split("```", 1)[0]
     namespace = {"ru": ru, "static": static, "tire_F": tire_F}
     exec(compile(snippet, "book", "exec"), namespace)  # the book's code, as written
     force = namespace["force"].force
@@ -58,7 +58,7 @@ def test_the_book_s_exchange_formats_snippet(flat, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     spectrum = ru.textures.load_texture("rough")
     ru.road.save_crg("my_road.crg", ru.textures.generate_field(spectrum, 51.2, 0.005, np.array([-0.08, 0.0, 0.08]), 7))
-    snippet = REFERENCE.split("**Exchange formats.**", 1)[1].split("```python", 1)[1].split("```", 1)[0]
+    snippet = REFERENCE.split("# Exchange formats", 1)[1].split("```python", 1)[1].split("```", 1)[0]
     namespace = {"ru": ru, "static": flat}
     exec(compile(snippet, "book", "exec"), namespace)  # the book's code, as written
     visco, back = namespace["visco"], namespace["back"]
@@ -70,7 +70,7 @@ def test_the_book_s_exchange_formats_snippet(flat, tmp_path, monkeypatch):
 def test_the_book_s_own_car_snippet():
     """The book's whole-car walk, as written (10 s at 120 km/h, four corners): every output's spectrum
     and the axles' coherence come back finite."""
-    snippet = REFERENCE.split("**Your own car", 1)[1].split("```python", 1)[1].split("```", 1)[0]
+    snippet = REFERENCE.split("# Your own car\n", 1)[1].split("```python", 1)[1].split("```", 1)[0]
     namespace = {"ru": ru}
     exec(compile(snippet, "book", "exec"), namespace)  # the book's code, as written
     run = namespace["run"]
@@ -81,7 +81,7 @@ def test_the_book_s_own_car_snippet():
 
 def test_the_book_s_own_tire_snippet():
     """The book's Python walk through the stages, as written, on the paper's tire file."""
-    snippet = REFERENCE.split("**Your own tire.**", 1)[1].split("```python", 1)[1].split("```", 1)[0]
+    snippet = REFERENCE.split("# Your own tire\n", 1)[1].split("```python", 1)[1].split("```", 1)[0]
     namespace = {}
     exec(compile(snippet.replace('"my_tire.toml"', '"165_65R14"'), "README", "exec"), namespace)
     force = namespace["force"].force

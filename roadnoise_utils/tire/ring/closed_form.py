@@ -59,7 +59,7 @@ def single_ring_spec(spec: TireSpec, n_elements: int | None = None) -> TireSpec:
 
 
 def ring_check(spec: TireSpec, n_max: int = 8, n_elements: int | None = None) -> pd.DataFrame:
-    """FE single-ring frequencies against the closed form, n = 0..``n_max``.
+    """FE single-ring frequencies against the closed form, wave numbers n = 0 to ``n_max``.
 
     Returns
     -------
