@@ -137,7 +137,8 @@ print(sweep.to_string(float_format=lambda v: f"{v:.0f}"))
 
 # %%
 # The speed sweep with the measured peaks
-ru.figures.contact_loss.plot_speed_sweep(sweep, paper=measured)
+ax = ru.figures.contact_loss.plot_speed_sweep(sweep, paper=measured)
+ax.set_title(f"{tire_name}: the peak hub force against speed, one-sided contact and the linear chain")
 plt.show()
 
 # %% [markdown]

@@ -151,7 +151,10 @@ def plot_cavity_split(tables, measured: tuple[float, float], rated_load: float) 
     right.set_ylabel("split (Hz)")
     for ax in (left, right):
         ax.set_xlabel("load (N)")
-        ax.legend(fontsize=7)
+    low, high = left.get_ylim()
+    left.set_ylim(low - 0.45 * (high - low), high)  # room under the lines for the legend
+    left.legend(fontsize=7, loc="lower left")
+    right.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0))  # outside: it covers nothing
     return fig
 
 
