@@ -28,7 +28,6 @@ from __future__ import annotations
 
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, replace
-from itertools import repeat
 
 import numpy as np
 from scipy.interpolate import CubicSpline
@@ -166,14 +165,21 @@ def _dynamic_reductions(tire: SectionTire, f_max: float, cutoff: float, wall: np
     """Reduced harmonics 0, 1, 2, ... with their modes, up to the first (n >= 2) with no mode below ``cutoff``.
 
     Each records the tire's left-right symmetry (:func:`roadnoise_utils.tire.cross_section.dynamics.lateral_mirror`),
-    which halves its receptance's work twice over.
+    which halves its receptance's work twice over. Two harmonics at a time, one per thread (the sparse
+    factorisations and products release the GIL); the one after the last is reduced for nothing.
     """
-    reduced, mirror = [], lateral_mirror(tire.ops)
-    for n in range(tire.harmonics + 1):
-        red = reduce_harmonic(tire.ops, tire.grid.dofs, n, f_max, cutoff, mirror=mirror, wall=wall)
-        reduced.append(red)
-        if n >= 2 and red.n_modes == 0:
-            break
+    mirror = lateral_mirror(tire.ops)
+
+    def reduce(n: int):
+        return reduce_harmonic(tire.ops, tire.grid.dofs, n, f_max, cutoff, mirror=mirror, wall=wall)
+
+    reduced = []
+    with ThreadPoolExecutor(max_workers=2) as workers:
+        for first in range(0, tire.harmonics + 1, 2):
+            for red in workers.map(reduce, range(first, min(first + 2, tire.harmonics + 1))):
+                reduced.append(red)
+                if red.n >= 2 and red.n_modes == 0:
+                    return reduced
     return reduced
 
 
@@ -352,26 +358,38 @@ class EvenFootprint:
         """2 for a representative with a mirror partner, 1 on ``theta = 0`` (R,)."""
         return np.where(self.partner >= 0, 2.0, 1.0)
 
-    def _blocks(self, omegas: np.ndarray, laws: dict | None, inertia: bool, columns: np.ndarray):
-        """Yields ``(slice, tables)``: per block of frequencies, each one's gather table (:func:`angular_table`)
-        of the receptance rows of the grid columns ``columns``."""
-        laws = self.tire.ops.laws if laws is None else laws
+    def _tables(self, block: np.ndarray, laws: dict, inertia: bool, columns: np.ndarray) -> list[np.ndarray]:
+        """Each frequency's gather table (:func:`angular_table`) of the receptance rows of the grid columns
+        ``columns``, at the angular frequencies ``block`` (rad/s, at most :data:`BLOCK`)."""
         c = self.tire.grid.n_cols
-        blocks = np.empty((BLOCK, self.cos.shape[1], 4, columns.size, c), complex)
         rows = contact_rows(c, columns)
+        blocks = np.empty((block.size, self.cos.shape[1], 4, columns.size, c), complex)
+        for k, harmonic in enumerate(self.harmonics):
+            blocks[:, k] = blocks_by_sum(harmonic.receptance(laws, block, inertia, rows), c, columns)
+        return [angular_table(at_frequency, self.cos, self.sin) for at_frequency in blocks]
 
-        def fill(k: int, block: np.ndarray) -> None:
-            receptance = self.harmonics[k].receptance(laws, block, inertia, rows)
-            blocks[: block.size, k] = blocks_by_sum(receptance, c, columns)
+    def _blocks(self, omegas: np.ndarray, laws: dict | None, inertia: bool, columns: np.ndarray, work=None):
+        """Yields ``(slice, result)`` per block of :data:`BLOCK` frequencies, ``result = work(slice, tables)``
+        (default the tables themselves: each frequency's gather table of the receptance rows of the grid
+        columns ``columns``, :meth:`_tables`), in the order of the blocks.
 
-        # LAPACK releases the GIL: two harmonics at a time
-        with ThreadPoolExecutor(max_workers=2) as workers:
-            for start in range(0, len(omegas), BLOCK):
-                part = slice(start, min(start + BLOCK, len(omegas)))
-                block = np.asarray(omegas[part], float)
-                with threadpool_limits(1):
-                    list(workers.map(fill, range(len(self.harmonics)), repeat(block)))
-                yield part, [angular_table(at_frequency, self.cos, self.sin) for at_frequency in blocks[: block.size]]
+        Two blocks at a time, one per thread, each whole (its harmonics' receptances, its tables and
+        ``work``): LAPACK, BLAS and numpy's loops release the GIL, so the two cores share every step.
+        """
+        laws = self.tire.ops.laws if laws is None else laws
+        parts = [slice(start, min(start + BLOCK, len(omegas))) for start in range(0, len(omegas), BLOCK)]
+
+        def run(part: slice):
+            tables = self._tables(np.asarray(omegas[part], float), laws, inertia, columns)
+            return tables if work is None else work(part, tables)
+
+        with ThreadPoolExecutor(max_workers=2) as workers, threadpool_limits(1):
+            pending = [workers.submit(run, part) for part in parts[:2]]
+            for index, part in enumerate(parts):
+                result = pending[index].result()
+                if index + 2 < len(parts):
+                    pending.append(workers.submit(run, parts[index + 2]))
+                yield part, result
 
     def receptances(self, omegas: np.ndarray, laws: dict | None = None, inertia: bool = True):
         """``comp`` at angular frequencies ``omegas`` (rad/s), in blocks: yields ``(slice, (b, R, R))``.
@@ -384,6 +402,24 @@ class EvenFootprint:
             # an even displacement field: h(j, -a) = h(j, a); the mirrored column adds to its partner
             yield part, np.stack([self.projection.even(table, paired) for table in tables])
 
+    def _rim_loads(self, omegas: np.ndarray, laws: dict | None, inertia: bool, cavity: SectionCavityCoupling | None):
+        """At ``omegas`` (rad/s): the hub-force transfer of a vertical force at each contact point (n, P), the
+        free rim's dynamic stiffness (n,) (:func:`roadnoise_utils.tire.cross_section.dynamics.rim_transfer`; with the
+        ``cavity``, both effective: :func:`roadnoise_utils.tire.cross_section.cavity_frf.effective_rim`), and the cavity's
+        terms and coupled modes (None without one)."""
+        tire, static = self.tire, self.static
+        rim = rim_transfer(tire.ops, tire.grid.dofs, omegas, inertia, laws)
+        col, row = static.points
+        th, c = tire.grid.theta[row], tire.grid.n_cols
+        spread = np.sinc(tire.grid.dtheta / (2 * np.pi))
+        transfer = (-(np.cos(th) ** 2) * rim.contact[:, col] + np.sin(th) ** 2 * rim.contact[:, c + col]) * spread
+        if cavity is None:
+            return transfer, rim.free_rim, None, None
+        terms = cavity_terms(tire, static, cavity, omegas, self.harmonics)
+        coupled = terms.coupled()
+        transfer, free_rim = effective_rim(transfer, rim.free_rim, terms, coupled)
+        return transfer, free_rim, terms, coupled
+
     def footprint(
         self,
         freqs: np.ndarray,
@@ -394,39 +430,37 @@ class EvenFootprint:
     ) -> FootprintFRF:
         """The :class:`FootprintFRF` at ``freqs`` (Hz) with these reductions (``laws``: see :meth:`receptances`);
         with the loaded air ``cavity`` (:mod:`roadnoise_utils.tire.cross_section.cavity_frf`; the tire's own laws, with inertia)."""
-        tire, static = self.tire, self.static
+        static = self.static
         freqs = np.asarray(freqs, float)
         if cavity is not None and (laws is not None or not inertia):
             raise ValueError("cavity: the air cavity is coupled with the tire's own laws and inertia only")
-        with threadpool_limits(1):
-            rim = rim_transfer(tire.ops, tire.grid.dofs, 2 * np.pi * freqs, inertia, laws)
-            terms = None if cavity is None else cavity_terms(tire, static, cavity, 2 * np.pi * freqs, self.harmonics)
         col, row = static.points
-        th = tire.grid.theta[row]
-        c = tire.grid.n_cols
-        spread = np.sinc(tire.grid.dtheta / (2 * np.pi))
-        transfer = (-(np.cos(th) ** 2) * rim.contact[:, col] + np.sin(th) ** 2 * rim.contact[:, c + col]) * spread
-        free_rim = rim.free_rim
-        if terms is not None:
-            coupled = terms.coupled()
-            transfer, free_rim = effective_rim(transfer, free_rim, terms, coupled)
         hub = np.empty((freqs.size, col.size), complex)
+        transfer = np.empty((freqs.size, col.size), complex)
+        free_rim = np.empty(freqs.size, complex)
         lateral, paired = self.lateral, self.partner >= 0
-        blocks = self._blocks(2 * np.pi * freqs, laws, inertia, lateral.columns)
+
+        def solve(part: slice, tables: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+            loads, rim, terms, coupled = self._rim_loads(2 * np.pi * freqs[part], laws, inertia, cavity)
+            comp_rows = np.stack([lateral.projection.even(table, paired) for table in tables])
+            load = loads[:, self.keep]
+            if terms is None:
+                return lateral.solve(comp_rows, load)[:, self.representative], loads, rim
+
+            def solve_rows(rhs):
+                return lateral.solve(comp_rows, rhs)
+
+            points = terms.points[:, self.keep]
+            y = woodbury_solve(solve_rows, load, points, coupled, self.pair_weight)
+            return y[:, self.representative], loads, rim
+
+        blocks = self._blocks(2 * np.pi * freqs, laws, inertia, lateral.columns, work=solve)
         if progress:
             from tqdm.auto import tqdm
 
             blocks = tqdm(blocks, total=-(-freqs.size // BLOCK), desc="footprint FRF")
-        for part, tables in blocks:
-            comp_rows = np.stack([lateral.projection.even(table, paired) for table in tables])
-            load = transfer[part][:, self.keep]
-            if terms is None:
-                y = lateral.solve(comp_rows, load)
-            else:
-                solve = lambda rhs, rows=comp_rows: lateral.solve(rows, rhs)  # noqa: E731
-                points = terms.points[part][:, self.keep]
-                y = woodbury_solve(solve, load, points, coupled[part], self.pair_weight)
-            hub[part] = y[:, self.representative]
+        for part, (y, loads, rim) in blocks:
+            hub[part], transfer[part], free_rim[part] = y, loads, rim
         return FootprintFRF(
             freqs=freqs, hub=hub, transfer=transfer, free_rim=free_rim, static=static, n_dynamic=self.n_dynamic
         )
@@ -487,6 +521,7 @@ def _high_harmonics(tire: SectionTire, n_dyn: int, f_max: float) -> tuple:
         return n_all, np.zeros((0, 0)), []
     sampled = _sample_harmonics(n_dyn + 1, tire.harmonics)
     mirror = lateral_mirror(ops)
-    reduced = [reduce_harmonic(ops, grid.dofs, n, f_max, None, mirror=mirror) for n in sampled]
+    with ThreadPoolExecutor(max_workers=2) as workers:  # as the dynamic harmonics: the GIL is released
+        reduced = list(workers.map(lambda n: reduce_harmonic(ops, grid.dofs, n, f_max, None, mirror=mirror), sampled))
     basis = CubicSpline(sampled, np.eye(sampled.size), axis=0)(n_all) if sampled.size > 1 else np.ones((1, 1))
     return n_all, basis, reduced

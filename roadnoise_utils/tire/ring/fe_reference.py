@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import numpy as np
-import scipy.sparse.linalg as spla
 
 from ...response.band_limit import frequency_domain_response
 from ...road.cleat import cleat_input
@@ -122,7 +121,7 @@ def fe_moving_hub(
         row_reduced = np.asarray(basis.T @ row)
         corner = lt.hub_diagonal(w) - w**2 * (own_mass + hub_mass) + stiffness + 1j * w * damping
         # [[D, c], [c^T, corner]] [u; U_H] = [b; 0], with c the hub column: Schur complement on the hub
-        lu = spla.splu(solver.dynamic_stiffness(w), permc_spec="NATURAL")
+        lu = solver.factorise(w)
         b = np.asarray(basis.T @ (fet.modulus_ratio("tread", w) * footprint)).astype(complex)
         x_road = lu.solve(b)
         x_hub = lu.solve(row_reduced.astype(complex))

@@ -26,6 +26,7 @@ from tqdm.auto import tqdm
 from ... import guards
 from ..cavity import CavityCoupling
 from ..model import FRFResult
+from .banded import banded_sum
 from .loaded import LoadedTire, loaded_tire
 from .mechanics import FETModel
 from .static import StaticState
@@ -57,6 +58,17 @@ class HubForceSolver:
         self._basis = basis
         self._parts = {name: (basis.T @ m @ basis).tocsc() for name, m in parts.items()}
         self._footprint = np.asarray(loaded.road_input.sum(axis=1)).ravel()
+        self._banded = banded_sum(list(self._parts.values()))
+
+    def factorise(self, omega: float, inertia: bool = True):
+        """The LU of the reduced (or full) :math:`D(\\omega)` (without the mass term unless ``inertia``): banded
+        (:class:`.banded.BandedSum`) when the matrices are a band, else SuperLU; either has ``solve(rhs, trans)``."""
+        if self._banded is None:
+            matrix = self.dynamic_stiffness(omega) if inertia else self.stiffness(omega)
+            return spla.splu(matrix, permc_spec="NATURAL")
+        g = self.loaded.ratios(omega)
+        weights = [1.0, -(omega**2) if inertia else 0.0, *(g[name] for name in self.loaded.K_compound)]
+        return self._banded.lu(np.array(weights, complex))
 
     def stiffness(self, omega: float, storage_only: bool = False) -> sp.csc_matrix:
         r"""Reduced (or full) stiffness :math:`K(\omega)` (complex unless ``storage_only``)."""
@@ -87,8 +99,7 @@ class HubForceSolver:
         moduli at ``omega`` (used by the residual correction of :mod:`.modal`).
         """
         lt = self.loaded
-        matrix = self.dynamic_stiffness(omega) if inertia else self.stiffness(omega)
-        solve = self._solver(spla.splu(matrix, permc_spec="NATURAL"), omega)
+        solve = self._solver(self.factorise(omega, inertia), omega)
         row = lt.hub_row(omega)
         t = self._basis
         y = t @ solve(np.asarray(t.T @ row), trans="T")

@@ -1,11 +1,11 @@
-"""The banded Cholesky factor against a sparse LU, on a closed ring like the tire's."""
+"""The banded Cholesky factor and the banded LU of a weighted sum against a sparse LU, on a closed ring like the tire's."""
 
 import numpy as np
 import pytest
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
-from roadnoise_utils.tire.ring.banded import BandedCholesky
+from roadnoise_utils.tire.ring.banded import BandedCholesky, banded_sum
 
 
 def closed_ring(n: int, width: int = 3) -> sp.csr_array:
@@ -52,3 +52,29 @@ def test_refuses_an_asymmetric_matrix_and_an_indefinite_one():
         BandedCholesky(-closed_ring(20))
     with pytest.raises(ValueError, match="rows"):
         BandedCholesky(closed_ring(20)).solve(np.ones(7))
+
+
+def _open_chain(n: int) -> sp.csr_array:
+    """A tridiagonal matrix: a band in its natural order."""
+    return sp.diags_array([np.full(n - 1, -1.0), np.full(n, 3.0), np.full(n - 1, -1.5)], offsets=[-1, 0, 1]).tocsr()
+
+
+@pytest.mark.parametrize("parts", [[closed_ring(300), sp.eye_array(900).tocsr()], [_open_chain(500), sp.eye_array(500)]])
+def test_the_banded_lu_of_a_weighted_sum_solves_as_sparse_lu_both_ways(parts):
+    """A complex weighted sum (a dynamic stiffness: K g - omega^2 M), reordered (the closed ring) or not (a chain):
+    A x = b and A^T x = b (not conjugated) as SuperLU's, one and several right-hand sides."""
+    weights = np.array([1.0 + 0.2j, -0.7])
+    summed = banded_sum(parts)
+    assert (summed.order is None) == (parts[0].shape[0] == 500)  # the chain is a band already
+    matrix = (weights[0] * parts[0] + weights[1] * parts[1]).tocsc()
+    rhs = np.random.default_rng(2).standard_normal((matrix.shape[0], 3)) + 1j
+    lu, reference = summed.lu(weights), spla.splu(matrix)
+    for trans in ("N", "T"):
+        np.testing.assert_allclose(lu.solve(rhs, trans), reference.solve(rhs, trans=trans), rtol=1e-11, atol=1e-13)
+        np.testing.assert_allclose(lu.solve(rhs[:, 0], trans), reference.solve(rhs[:, 0], trans=trans), rtol=1e-11)
+
+
+def test_a_matrix_with_no_narrow_band_is_left_to_the_sparse_lu():
+    rng = np.random.default_rng(3)
+    dense = sp.random_array((200, 200), density=0.2, random_state=rng)
+    assert banded_sum([(dense + dense.T).tocsr() + 50 * sp.eye_array(200)]) is None
