@@ -59,7 +59,9 @@ def _open_chain(n: int) -> sp.csr_array:
     return sp.diags_array([np.full(n - 1, -1.0), np.full(n, 3.0), np.full(n - 1, -1.5)], offsets=[-1, 0, 1]).tocsr()
 
 
-@pytest.mark.parametrize("parts", [[closed_ring(300), sp.eye_array(900).tocsr()], [_open_chain(500), sp.eye_array(500)]])
+@pytest.mark.parametrize(
+    "parts", [[closed_ring(300), sp.eye_array(900).tocsr()], [_open_chain(500), sp.eye_array(500)]]
+)
 def test_the_banded_lu_of_a_weighted_sum_solves_as_sparse_lu_both_ways(parts):
     """A complex weighted sum (a dynamic stiffness: K g - omega^2 M), reordered (the closed ring) or not (a chain):
     A x = b and A^T x = b (not conjugated) as SuperLU's, one and several right-hand sides."""
