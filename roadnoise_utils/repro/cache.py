@@ -254,7 +254,14 @@ def _key_lock(path: Path) -> Iterator[bool]:
         yield False
         return
     with handle:
-        fcntl.flock(handle, fcntl.LOCK_EX)
+        try:
+            fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:  # another process computes this key: wait for it (logged, see _timed)
+            start = time.perf_counter()
+            fcntl.flock(handle, fcntl.LOCK_EX)
+            _log_line(
+                f"{path.name.split('-', 1)[0]} (waited)", time.perf_counter() - start, path.stem.rsplit("-", 1)[-1]
+            )
         try:
             yield True
         finally:
@@ -302,13 +309,18 @@ def cache_enabled() -> bool:
 def _timed(name: str, compute: Callable[[], T], key: str = "-") -> T:
     """``compute()``; with ``ROADNOISE_STAGE_LOG`` set, a line appended to that file per stage run: the stage's
     name, its wall time (s), the process id and the cache key (``-`` with the cache off)."""
-    log = os.environ.get("ROADNOISE_STAGE_LOG")
     start = time.perf_counter()
     value = compute()
+    _log_line(name, time.perf_counter() - start, key)
+    return value
+
+
+def _log_line(name: str, seconds: float, key: str) -> None:
+    """With ``ROADNOISE_STAGE_LOG`` set, append ``name, seconds, process id, key`` to that file (tab-separated)."""
+    log = os.environ.get("ROADNOISE_STAGE_LOG")
     if log:
         with open(log, "a") as out:
-            out.write(f"{name}\t{time.perf_counter() - start:.2f}\t{os.getpid()}\t{key}\n")
-    return value
+            out.write(f"{name}\t{seconds:.2f}\t{os.getpid()}\t{key}\n")
 
 
 def cached(

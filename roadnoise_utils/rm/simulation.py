@@ -18,7 +18,6 @@ equals python-control's ``forced_response`` on the same model to round-off (test
 
 from __future__ import annotations
 
-from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
 import control
@@ -28,10 +27,11 @@ from scipy.signal import lfilter
 from scipy.sparse.csgraph import connected_components
 
 from .. import guards
+from ..parallel import thread_map
 from ..road.input import RoadInput
 
-#: Threads that run the IIR sections (scipy's lfilter releases the GIL).
-THREADS = 2
+#: Parts the IIR sections are run in (on :func:`..parallel.threads` threads: scipy's lfilter releases the GIL).
+PARTS = 2
 #: Modes of :func:`response` stepped and summed together (their histories are held at once).
 MODES_AT_ONCE = 16
 
@@ -193,10 +193,9 @@ def _run(sections: ModalSections, u: np.ndarray, dt: float) -> np.ndarray:
             groups[-1].append(section)
         else:
             groups.append([section])
-    # lfilter releases the GIL: the sections run on two threads (the CI machine has 2 cores)
-    parts = [groups[k::THREADS] for k in range(THREADS)]
-    with ThreadPoolExecutor(THREADS) as pool:
-        return sections.direct @ u + sum(pool.map(run, parts))
+    # lfilter releases the GIL: two parts of the sections, on two threads where the cores are free
+    parts = [groups[k::PARTS] for k in range(PARTS)]
+    return sections.direct @ u + sum(thread_map(run, parts))
 
 
 def as_continuous_statespace(system) -> control.StateSpace:

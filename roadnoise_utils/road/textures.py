@@ -295,9 +295,9 @@ def _correlated(spectrum: RoadSpectrum, freqs: np.ndarray, y: np.ndarray, white:
     wheels of an axle above a few cycles/m) are factored apart: the same factor to that level,
     at a fraction of the cost.
     """
-    from concurrent.futures import ThreadPoolExecutor
-
     from scipy.sparse.csgraph import connected_components
+
+    from ..parallel import thread_map
 
     sep = np.round(np.abs(y[:, None] - y[None, :]), 12)
     unique, index = np.unique(sep, return_inverse=True)
@@ -314,9 +314,8 @@ def _correlated(spectrum: RoadSpectrum, freqs: np.ndarray, y: np.ndarray, white:
             coh = np.moveaxis(table[index[np.ix_(tracks, tracks)]], -1, 0)  # (block, k, k)
             out[block, tracks] = np.einsum("fij,fj->fi", _coherence_factor(coh), white[block, tracks])
 
-    # the blocks are independent and their numerics release the GIL: two threads (the CI machine's 2 cores)
-    with ThreadPoolExecutor(2) as pool:
-        list(pool.map(fill, range(0, freqs.size, FIELD_BLOCK)))
+    # the blocks are independent and their numerics release the GIL: two threads where the cores are free
+    list(thread_map(fill, range(0, freqs.size, FIELD_BLOCK)))
     return out
 
 

@@ -30,16 +30,16 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, replace
 
 import numpy as np
-from scipy.interpolate import CubicSpline
 from threadpoolctl import threadpool_limits
 
 from ... import guards
+from ...parallel import threads
 from ..model import FRFResult
 from ..tasselli import Tasselli
 from . import spec as cross_section
 from .cavity_frf import SectionCavityCoupling, cavity_terms, effective_rim, woodbury_solve
 from .contact import patch_factor
-from .dynamics import harmonic_modes, lateral_mirror, reduce_harmonic, rim_transfer
+from .dynamics import rim_transfer
 from .footprint_points import (  # noqa: F401 (contact_receptance: the reference, kept importable from here)
     LateralSplit,
     Projection,
@@ -50,6 +50,7 @@ from .footprint_points import (  # noqa: F401 (contact_receptance: the reference
     even_projection,
     lateral_split,
 )
+from .reductions import FootprintReductions, dynamic_harmonics, footprint_reductions  # noqa: F401 (dynamic_harmonics: kept importable from here)
 from .static import SectionStaticState, SectionTire
 
 #: Harmonics with a mode below ``CUTOFF_FACTOR * f_max`` are reduced with those modes (:func:`footprint_frf`).
@@ -132,15 +133,6 @@ class FootprintFRF:
         return -(self.free_rim + np.einsum("fp,fp->f", self.transfer, self.hub))
 
 
-def dynamic_harmonics(tire: SectionTire, f_max: float, cutoff: float) -> int:
-    """The last harmonic with a mode below ``cutoff`` (Hz), searching upwards from ``n = 2``."""
-    omega = np.pi * f_max
-    n = 2
-    while n < tire.harmonics and harmonic_modes(tire.ops, n, omega, cutoff, max_modes=4).shape[1]:
-        n += 1
-    return n - 1
-
-
 def _check_inputs(tire: SectionTire, static: SectionStaticState, freqs) -> np.ndarray:
     """Refuse frequencies that are not finite, ascending and >= 0, a static state of another tire,
     and evaluation blocks above the memory limit; warn above 2 kHz (the model's band is 400 Hz)."""
@@ -159,74 +151,6 @@ def _check_inputs(tire: SectionTire, static: SectionStaticState, freqs) -> np.nd
     n_bytes = 16.0 * BLOCK * (2 * (rows.max() - rows.min()) + 1) * (2 * tire.grid.n_cols) ** 2 * 3
     guards.check_memory(n_bytes, "the footprint FRF's angular sums", "[mesh] contact_spacing, crown_elements")
     return freqs
-
-
-def _dynamic_reductions(tire: SectionTire, f_max: float, cutoff: float, wall: np.ndarray | None = None) -> list:
-    """Reduced harmonics 0, 1, 2, ... with their modes, up to the first (n >= 2) with no mode below ``cutoff``.
-
-    Each records the tire's left-right symmetry (:func:`roadnoise_utils.tire.cross_section.dynamics.lateral_mirror`),
-    which halves its receptance's work twice over. Two harmonics at a time, one per thread (the sparse
-    factorisations and products release the GIL); the one after the last is reduced for nothing.
-    """
-    mirror = lateral_mirror(tire.ops)
-
-    def reduce(n: int):
-        return reduce_harmonic(tire.ops, tire.grid.dofs, n, f_max, cutoff, mirror=mirror, wall=wall)
-
-    reduced = []
-    with ThreadPoolExecutor(max_workers=2) as workers:
-        for first in range(0, tire.harmonics + 1, 2):
-            for red in workers.map(reduce, range(first, min(first + 2, tire.harmonics + 1))):
-                reduced.append(red)
-                if red.n >= 2 and red.n_modes == 0:
-                    return reduced
-    return reduced
-
-
-@dataclass(frozen=True, eq=False)
-class FootprintReductions:
-    """Every harmonic of a tire reduced for a band: what :meth:`EvenFootprint.build` needs of the tire alone.
-
-    They depend on the tire, the band and the modes' cutoff, not on the loaded state: the flat
-    road's and the drum's footprints (and the time stepping's modal harmonics,
-    :func:`roadnoise_utils.tire.cross_section.stepping.reduce_all`) share them.
-
-    Attributes
-    ----------
-    f_max, cutoff : float
-        Band and modes' cutoff (Hz).
-    dynamic : list of ReducedHarmonic
-        Harmonics ``0, 1, ...`` with their modes below ``cutoff``, up to the first (``n >= 2``) without one.
-    n_high : ndarray of int
-        The quasi-static harmonics above them.
-    basis : ndarray (n_high, n_samples)
-        Interpolation weights from the sampled quasi-static harmonics to ``n_high``.
-    high : list of ReducedHarmonic
-        The sampled quasi-static harmonics (no modes).
-    """
-
-    f_max: float
-    cutoff: float
-    dynamic: list
-    n_high: np.ndarray
-    basis: np.ndarray
-    high: list
-
-
-def footprint_reductions(
-    tire: SectionTire, f_max: float, cutoff: float, wall: np.ndarray | None = None
-) -> FootprintReductions:
-    """Reduce every harmonic for ``0..f_max`` Hz, modes below ``cutoff`` Hz (see the module notes); with
-    the cavity wall's load ``wall`` (:func:`roadnoise_utils.tire.cross_section.cavity.wall_volume`) in the dynamic harmonics' bases."""
-    with threadpool_limits(1):
-        dynamic = _dynamic_reductions(tire, f_max, cutoff, wall)
-        n_high, basis, high = _high_harmonics(tire, len(dynamic) - 1, f_max)
-    return FootprintReductions(float(f_max), float(cutoff), dynamic, n_high, basis, high)
-
-
-def _sample_harmonics(first: int, last: int, count: int = 24) -> np.ndarray:
-    """Harmonics sampled densely near ``first`` and sparsely towards ``last`` (interpolation nodes)."""
-    return np.unique(np.round(np.geomspace(first, last, count)).astype(int))
 
 
 def _offsets(static: SectionStaticState) -> np.ndarray:
@@ -383,7 +307,7 @@ class EvenFootprint:
             tables = self._tables(np.asarray(omegas[part], float), laws, inertia, columns)
             return tables if work is None else work(part, tables)
 
-        with ThreadPoolExecutor(max_workers=2) as workers, threadpool_limits(1):
+        with ThreadPoolExecutor(max_workers=threads()) as workers, threadpool_limits(1):
             pending = [workers.submit(run, part) for part in parts[:2]]
             for index, part in enumerate(parts):
                 result = pending[index].result()
@@ -506,22 +430,3 @@ def footprint_frf(
         reductions = footprint_reductions(tire, f_max, cutoff_factor * f_max, cavity.cavity.wall)
     even = EvenFootprint.build(tire, static, f_max, cutoff_factor * f_max, reductions)
     return even.footprint(freqs, inertia=inertia, progress=progress, cavity=cavity)
-
-
-def _high_harmonics(tire: SectionTire, n_dyn: int, f_max: float) -> tuple:
-    """The quasi-static harmonics ``n_dyn + 1 .. N``, sampled in ``n`` and reduced (no modes).
-
-    Returns the harmonics ``n_all``, the interpolation weights ``basis`` (n_all, n_samples) and
-    the reduced sampled harmonics, evaluated at every frequency like the dynamic ones (the
-    compound laws have a cusp at 0 Hz, where a spline in frequency would be off by a few %).
-    """
-    grid, ops = tire.grid, tire.ops
-    n_all = np.arange(n_dyn + 1, tire.harmonics + 1)
-    if n_all.size == 0:
-        return n_all, np.zeros((0, 0)), []
-    sampled = _sample_harmonics(n_dyn + 1, tire.harmonics)
-    mirror = lateral_mirror(ops)
-    with ThreadPoolExecutor(max_workers=2) as workers:  # as the dynamic harmonics: the GIL is released
-        reduced = list(workers.map(lambda n: reduce_harmonic(ops, grid.dofs, n, f_max, None, mirror=mirror), sampled))
-    basis = CubicSpline(sampled, np.eye(sampled.size), axis=0)(n_all) if sampled.size > 1 else np.ones((1, 1))
-    return n_all, basis, reduced

@@ -231,7 +231,7 @@ def _eig_by_parity(k_loaded: np.ndarray, parity: np.ndarray) -> tuple[np.ndarray
 
 def reduction_band(f_band: float, anchors: tuple[float, ...] = ANCHORS) -> tuple[float, float]:
     """``(f_top, f_free)`` (Hz) of the reduced harmonics for a band: up to the last anchor, modes to
-    ``FREE_FACTOR * 2 f_band`` (:func:`roadnoise_utils.tire.cross_section.footprint.footprint_reductions` of the tire)."""
+    ``FREE_FACTOR * 2 f_band`` (:func:`roadnoise_utils.tire.cross_section.reductions.footprint_reductions` of the tire)."""
     return float(anchors[-1]) * f_band, FREE_FACTOR * 2 * f_band
 
 
@@ -305,7 +305,7 @@ def section_modal_reduction(
     anchors : tuple of float
         Quasi-static anchor frequencies as fractions of ``f_band``, 0 first.
     reductions : FootprintReductions, optional
-        The tire's :func:`roadnoise_utils.tire.cross_section.footprint.footprint_reductions` for :func:`reduction_band`
+        The tire's :func:`roadnoise_utils.tire.cross_section.reductions.footprint_reductions` for :func:`reduction_band`
         of this band and anchors, if computed before (they do not depend on the loaded state).
     """
     check_options(frozen, damping, f_band)

@@ -4,7 +4,7 @@
 stage                          caches
 =============================  ==========================================================================
 :func:`roadnoise_utils.tire.cross_section.static`         :func:`roadnoise_utils.tire.cross_section.static.solve_section_static`
-:func:`footprint_reductions`   :func:`roadnoise_utils.tire.cross_section.footprint.footprint_reductions`
+:func:`footprint_reductions`   :func:`roadnoise_utils.tire.cross_section.reductions.footprint_reductions`
                                (the harmonics reduced for a band: shared by the loaded states)
 :func:`roadnoise_utils.tire.cross_section.footprint`      :func:`roadnoise_utils.tire.cross_section.footprint.footprint_frf`
                                (default 0-400 Hz every 1 Hz)
@@ -38,7 +38,7 @@ from ...road.cleat import cleat_profile
 from ..contact import ContactRun
 from ..model import DEFAULT_FREQS, LoadCase, load_tire
 from . import cavity as cavity_module
-from . import cavity_frf, footprint, modal, one_sided, stepping
+from . import cavity_frf, footprint, modal, one_sided, reductions, stepping
 from . import static as static_module
 from .footprint import FootprintFRF
 from .spec import CrossSectionSpec
@@ -109,26 +109,26 @@ def section_footprint(
 
     def compute() -> FootprintFRF:
         f_max = float(freqs.max())
-        reductions = footprint_reductions(tire, f_max, footprint.CUTOFF_FACTOR * f_max)
+        reduced = footprint_reductions(tire, f_max, footprint.CUTOFF_FACTOR * f_max)
         built = build_section_tire(inputs["tire"])
         cavity = cavity_frf.section_cavity_coupling(built, state) if inputs["tire"].cavity.enabled else None
-        return footprint.footprint_frf(built, state, freqs, progress=progress, reductions=reductions, cavity=cavity)
+        return footprint.footprint_frf(built, state, freqs, progress=progress, reductions=reduced, cavity=cavity)
 
     return cached(section_footprint, {**inputs, "freqs": freqs}, compute, runs=(footprint.footprint_frf,))
 
 
-def footprint_reductions(tire: SectionTireLike, f_max: float, cutoff: float) -> footprint.FootprintReductions:
-    """Cached :func:`roadnoise_utils.tire.cross_section.footprint.footprint_reductions`: every harmonic reduced for
+def footprint_reductions(tire: SectionTireLike, f_max: float, cutoff: float) -> reductions.FootprintReductions:
+    """Cached :func:`roadnoise_utils.tire.cross_section.reductions.footprint_reductions`: every harmonic reduced for
     ``0..f_max`` Hz with its modes below ``cutoff`` Hz; shared by the flat road's and the drum's
     footprints and by the time stepping's modal harmonics (:func:`harmonic_reductions`)."""
     inputs = {"tire": load_section_tire(tire), "f_max": float(f_max), "cutoff": float(cutoff)}
 
-    def compute() -> footprint.FootprintReductions:
+    def compute() -> reductions.FootprintReductions:
         built = build_section_tire(inputs["tire"])
         wall = cavity_module.wall_volume(built) if inputs["tire"].cavity.enabled else None  # the air's load
-        return footprint.footprint_reductions(built, inputs["f_max"], inputs["cutoff"], wall)
+        return reductions.footprint_reductions(built, inputs["f_max"], inputs["cutoff"], wall)
 
-    return cached(footprint_reductions, inputs, compute, runs=(footprint.footprint_reductions,))
+    return cached(footprint_reductions, inputs, compute, runs=(reductions.footprint_reductions,))
 
 
 def tassello_frfs(tire: SectionTireLike, case: LoadCase) -> Callable[[np.ndarray], np.ndarray]:
@@ -157,8 +157,8 @@ def section_modal(
 
     def compute() -> ModalReduction:
         built = build_section_tire(inputs["tire"])
-        reductions = footprint_reductions(tire, *modal.reduction_band(f_band))  # shared by the band's stages
-        return modal.section_modal_reduction(built, state, visco, **options, reductions=reductions)
+        reduced = footprint_reductions(tire, *modal.reduction_band(f_band))  # shared by the band's stages
+        return modal.section_modal_reduction(built, state, visco, **options, reductions=reduced)
 
     return cached(
         section_modal,
@@ -167,7 +167,7 @@ def section_modal(
         runs=(
             modal.section_modal_reduction,
             footprint.footprint_frf,
-            footprint.footprint_reductions,
+            reductions.footprint_reductions,
             static_module.solve_section_static,
         ),
     )
@@ -184,12 +184,12 @@ def frozen_check(tire: SectionTireLike, reference_frequency: float, freqs: np.nd
     def compute() -> modal.FrozenCheck:
         built = build_section_tire(inputs["tire"])
         band = 250.0  # the paper's
-        reductions = footprint_reductions(tire, *modal.reduction_band(band))  # shared by the band's stages
+        reduced = footprint_reductions(tire, *modal.reduction_band(band))  # shared by the band's stages
         return modal.frozen_check(
-            built, state, options["freqs"], options["reference_frequency"], f_band=band, reductions=reductions
+            built, state, options["freqs"], options["reference_frequency"], f_band=band, reductions=reduced
         )
 
-    runs = (modal.frozen_check, footprint.footprint_reductions, static_module.solve_section_static)
+    runs = (modal.frozen_check, reductions.footprint_reductions, static_module.solve_section_static)
     return cached(frozen_check, {**inputs, **options}, compute, runs=runs)
 
 
@@ -232,7 +232,7 @@ def harmonic_reductions(tire: SectionTireLike, f_max: float = 400.0) -> list:
         shared = footprint_reductions(tire, f_max, stepping.CUTOFF_FACTOR * f_max)  # the same modal harmonics
         return stepping.reduce_all(build_section_tire(inputs["tire"]), f_max, dynamic=shared.dynamic)
 
-    return cached(harmonic_reductions, inputs, compute, runs=(stepping.reduce_all, footprint.footprint_reductions))
+    return cached(harmonic_reductions, inputs, compute, runs=(stepping.reduce_all, reductions.footprint_reductions))
 
 
 def dynamic_cleat(

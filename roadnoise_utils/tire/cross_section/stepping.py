@@ -92,7 +92,7 @@ def reduce_all(
     which its matrices do not couple: stepping them apart reads half the operators' entries.
 
     ``dynamic``: the harmonics with their modes, reduced before for this band and cutoff
-    (:attr:`roadnoise_utils.tire.cross_section.footprint.FootprintReductions.dynamic`: the same reductions).
+    (:attr:`roadnoise_utils.tire.cross_section.reductions.FootprintReductions.dynamic`: the same reductions).
     """
     out, modal, mirror = [], True, lateral_mirror(tire.ops)
     given = {} if dynamic is None else {red.n: red for red in dynamic}
