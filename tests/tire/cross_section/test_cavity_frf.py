@@ -1,4 +1,6 @@
-"""The air cavity in the cross-section tire's footprint FRFs, against the tire and the air solved as one."""
+"""The air cavity in the cross-section tire's footprint FRFs, against the tire and the air solved as one.
+
+On the 165/65 R14 on a coarse grid (``coarse_section``): the reference solves every harmonic directly."""
 
 import numpy as np
 import pytest
@@ -11,13 +13,11 @@ from roadnoise_utils.tire.cross_section import stages as section_stages
 from roadnoise_utils.tire.cross_section.dynamics import rim_transfer, rim_vector
 from roadnoise_utils.tire.cross_section.footprint import contact_receptance, footprint_frf, footprint_reductions
 
-TIRE = "165_65R14_cross_section"
-
 
 @pytest.fixture(scope="module")
-def setting():
-    tire = section_stages.section_tire(TIRE)
-    static = ru.stages.solve_static(TIRE, "flat")
+def setting(coarse_section):
+    tire = section_stages.section_tire(coarse_section)
+    static = ru.stages.solve_static(coarse_section, "flat")
     coupling = cavity_frf.section_cavity_coupling(tire, static)
     return tire, static, coupling
 
@@ -80,7 +80,7 @@ def _one_system(tire, static, coupling, frequency):
 
 
 @pytest.mark.parametrize("frequency", [120.0, 248.0, 400.0])
-def test_the_coupled_footprint_equals_the_tire_and_air_solved_as_one(setting, with_wall, frequency):
+def test_the_coupled_footprint_equals_the_tire_and_air_solved_as_one(setting, with_wall, frequency, coarse_section):
     """The even modes, their harmonic content truncated, the Woodbury update of the reduced footprint
     solve (mirror splits, Ritz-reduced harmonics) against every waveguide node and every harmonic in
     one dense solve; at 120 Hz, on the loaded vertical cavity mode (~248 Hz, where the cavity triples
@@ -90,7 +90,9 @@ def test_the_coupled_footprint_equals_the_tire_and_air_solved_as_one(setting, wi
     tire, static, coupling = setting
     freqs = np.array([frequency]) if frequency == 400.0 else np.array([frequency, 400.0])
     coupled = footprint_frf(tire, static, freqs, reductions=with_wall, cavity=coupling)
-    plain = footprint_frf(tire, static, freqs, reductions=section_stages.footprint_reductions(TIRE, 400.0, 1000.0))
+    plain = footprint_frf(
+        tire, static, freqs, reductions=section_stages.footprint_reductions(coarse_section, 400.0, 1000.0)
+    )
     (h_tot, g_h), (h_bare, g_bare) = _one_system(tire, static, coupling, frequency)
     added_h, added_g = coupled.H_tot[0] - plain.H_tot[0], coupled.G_H[0] - plain.G_H[0]
     assert abs(added_h) > 1e-2 * abs(plain.H_tot[0])  # the cavity matters here: not a vanishing term
@@ -123,11 +125,11 @@ def test_a_rigid_translation_and_the_pressure_on_a_free_body(setting):
     np.testing.assert_allclose(terms.rim[1, 1:] / coupling.content[1:, 1], volume, rtol=1e-10)
 
 
-def test_the_cavity_adds_the_air_s_stiffness_at_rest_and_a_resonance_at_its_vertical_mode(setting):
+def test_the_cavity_adds_the_air_s_stiffness_at_rest_and_a_resonance_at_its_vertical_mode(setting, coarse_section):
     """At rest only the uniform mode acts, and the air's compressibility can only stiffen the tire; the
     coupled H_tot peaks next to the loaded cavity's vertical (even) mode, the fore-aft one absent."""
     tire, static, coupling = setting
-    reductions = section_stages.footprint_reductions(TIRE, 400.0, 1000.0)
+    reductions = section_stages.footprint_reductions(coarse_section, 400.0, 1000.0)
     freqs = np.concatenate([[0.01], np.arange(200.0, 281.0, 2.0), [400.0]])
     coupled = footprint_frf(tire, static, freqs, reductions=reductions, cavity=coupling)
     plain = footprint_frf(tire, static, freqs, reductions=reductions)
@@ -140,19 +142,17 @@ def test_the_cavity_adds_the_air_s_stiffness_at_rest_and_a_resonance_at_its_vert
     assert gain.max() > 1.5
 
 
-def test_the_cavity_needs_the_tire_s_own_laws():
-    tire = section_stages.section_tire(TIRE)
-    static = ru.stages.solve_static(TIRE, "flat")
-    coupling = cavity_frf.section_cavity_coupling(tire, static)
+def test_the_cavity_needs_the_tire_s_own_laws(setting):
+    tire, static, coupling = setting
     with pytest.raises(ValueError, match="cavity"):
         footprint_frf(tire, static, np.array([0.0, 100.0]), inertia=False, cavity=coupling)
 
 
-def test_the_reduced_harmonics_carry_the_wall_s_load(setting, with_wall):
+def test_the_reduced_harmonics_carry_the_wall_s_load(setting, with_wall, coarse_section):
     """The cavity's terms from the Ritz-reduced harmonics (the wall's static shapes in their bases)
     against every harmonic solved directly, across the band."""
     tire, static, coupling = setting
-    assert len(with_wall.dynamic) == len(section_stages.footprint_reductions(TIRE, 400.0, 1000.0).dynamic)
+    assert len(with_wall.dynamic) == len(section_stages.footprint_reductions(coarse_section, 400.0, 1000.0).dynamic)
     omegas = 2 * np.pi * np.array([5.0, 90.0, 250.0, 390.0])
     reduced = cavity_frf.cavity_terms(tire, static, coupling, omegas, with_wall.dynamic)
     exact = cavity_frf.cavity_terms(tire, static, coupling, omegas)

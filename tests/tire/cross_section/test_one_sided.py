@@ -1,4 +1,7 @@
-"""Cleat passages with one-sided contact on the cross-section tire: quasi-static and 30 km/h."""
+"""Cleat passages with one-sided contact on the cross-section tire: quasi-static and 30 km/h.
+
+The paper's cleat test on the 165/65 R14 (notebook 08's cached stages); the properties of the stepping
+(a flat road, runs stepped together, half the step) on its coarse grid (``coarse_section``)."""
 
 import numpy as np
 import pytest
@@ -41,10 +44,17 @@ def test_contact_loss_raises_the_base_curve_above_the_tied_footprint(run):
     assert run.contact_points.min() < run.contact_points.max()
 
 
-def test_a_flat_profile_changes_nothing():
+@pytest.fixture(scope="module")
+def coarse(coarse_section):
+    """The coarse tire on the paper's drum, and its harmonics reduced for the stepping."""
+    tire = section_stages.section_tire(coarse_section)
+    drum = ru.stages.solve_static(coarse_section, "drum", drum_radius=1.25)
+    return tire, drum, section_stages.harmonic_reductions(coarse_section)
+
+
+def test_a_flat_profile_changes_nothing(coarse):
     """A zero profile: every step is the static state (superposition of nothing)."""
-    tire = section_stages.section_tire(TIRE)
-    drum = ru.stages.solve_static(TIRE, "drum", drum_radius=1.25)
+    tire, drum, _ = coarse
     flat = section_quasi_static_run(tire, drum, lambda s: np.zeros_like(s), (-0.01, 0.01), 0.005)
     assert np.abs(flat.hub_force).max() < 1e-6 * drum.load
     assert np.all(flat.contact_points == drum.contact.sum())
@@ -102,14 +112,12 @@ def test_dynamic_run_against_the_measured_test(section_test):
     assert leading["damping ratio"] > 0.0
 
 
-def test_runs_stepped_together_are_the_runs_alone():
+def test_runs_stepped_together_are_the_runs_alone(coarse):
     """The frozen and the one-sided run share one stepper (one pass over the operators): each equals
     its run alone, through the cleat's first contact losses (no run's contact leaks into another)."""
-    tire = section_stages.section_tire(TIRE)
-    drum = ru.stages.solve_static(TIRE, "drum", drum_radius=1.25)
+    tire, drum, reduced = coarse
     profile = cleat_profile(0.015, 0.015, "triangle")
-    reduced = section_stages.harmonic_reductions(TIRE)
-    args = (tire, drum, profile, 30 / 3.6, (-0.12, -0.07))  # contact is first lost at -0.092 m
+    args = (tire, drum, profile, 30 / 3.6, (-0.12, -0.07))  # contact is first lost near -0.09 m
     one_sided, frozen = section_dynamic_runs(*args, dt=1 / 12000, frozen=(False, True), reduced=reduced)
     alone = section_dynamic_run(*args, dt=1 / 12000, reduced=reduced)
     assert one_sided.contact_points.min() < frozen.contact_points.min() == drum.contact.sum()
@@ -119,7 +127,7 @@ def test_runs_stepped_together_are_the_runs_alone():
         section_dynamic_runs(*args, frozen=(), reduced=reduced)
 
 
-def test_halving_the_step_changes_the_band_limited_impact_little():
+def test_halving_the_step_changes_the_band_limited_impact_little(coarse, coarse_section):
     """The cleat runs' step (``CONTACT_DT``, 24 samples per 250 Hz period) against half of it, through
     the impact (the window's end is band-limited the same way in both): the 0-250 Hz peak moves by
     less than 0.5 %, as second-order time integration at this step predicts (0.2 % per 250 Hz period
@@ -127,12 +135,9 @@ def test_halving_the_step_changes_the_band_limited_impact_little():
     from roadnoise_utils.experiments.one_sided_cleat import in_model_band
     from roadnoise_utils.tire.cross_section.model import CONTACT_DT
 
-    setup = ru.tire_model(TIRE).one_sided_setup(ru.experiments.one_sided_conditions())
-
-    tire = section_stages.section_tire(TIRE)
-    drum = ru.stages.solve_static(TIRE, "drum", drum_radius=1.25)
+    setup = ru.tire_model(coarse_section).one_sided_setup(ru.experiments.one_sided_conditions())
+    tire, drum, reduced = coarse
     profile = cleat_profile(0.015, 0.015, "triangle")
-    reduced = section_stages.harmonic_reductions(TIRE)
     args = (tire, drum, profile, 30 / 3.6, (-0.12, 0.03))  # from just before the cleat touches
     peaks = []
     for dt in (CONTACT_DT, CONTACT_DT / 2):
