@@ -1,21 +1,29 @@
-"""Benchmark of the road simulation: aggregated per track (FFT) against per tassello, side by side.
+"""Benchmark of the road simulation against its floor and its peers, side by side in one run.
 
 Run on demand (never as a timed test)::
 
-    python benchmarks/bench_road_simulation.py
+    python benchmarks/bench_road_simulation.py                # 2e5 and 2e6 samples, 2-D and 3-D roads
+    python benchmarks/bench_road_simulation.py --sizes 200000 --repeat 5
 
-The 195/65 R15's fixed-hub tire (its fits, one input per tassello) on a 2-D rough road at
-30 m/s, 9.6 kHz, for 2e5 and 2e6 samples: ``rm.aggregated.road_hub_force`` (one kernel per
-track and phase, the inputs never formed) against ``road.input.profile_input`` followed by
-``rm.simulation.simulate`` (every modal section on its tassello's input), and python-control's
-``forced_response`` on the same inputs (the state space of the fits; at 2e5 samples, at 2e6 too
-with ``--forced-response-2e6``: ~10 min, in ten consecutive pieces of 2e5 samples, each starting
-from the state the previous one ended in: exact for its first-order hold, and the 1022 states'
-history of a piece, 3 GB, fits in memory where the whole record's 30 GB would not). Times are ranges over repeats (the machines are shared);
-peak memory is what numpy allocates during the call (tracemalloc), the road itself excluded; the
-forces are compared. ``road evaluation`` is the road function alone on the fine grid, the floor of
-every method. Run with ``ROADNOISE_MAX_BYTES=8000000000``: the per-tassello inputs need 5 GiB
-of the 4 GiB default at 2e6.
+The 195/65 R15's fixed-hub tire (its fits, one input per tassello, 520 modal sections) on a rough
+road at 30 m/s, 9.6 kHz, uniform across the width (2-D, one track) or varying across it (3-D, one
+track per belt strip in contact). Timed in the same run, each a range over ``--repeat`` repeats
+(the machines are shared: compare the ratios, not the seconds):
+
+* ``road_hub_force``, first call: the tire's and the speed's path built (the kernels of every track
+  and phase and their spectra, ``rm.aggregated.road_path``), then the road;
+* ``road_hub_force``, repeated call: the same tire and speed, the path kept;
+* the floor: the road evaluated on exactly the grid ``road_hub_force`` reads (every track and phase)
+  plus one FFT convolution (scipy's overlap-add ``oaconvolve``) of each track's and phase's heights
+  with a kernel of the impulse responses' length;
+* per tassello: ``road.input.profile_input`` then ``rm.simulation.simulate`` (every modal section on its
+  tassello's input), at 2e5 samples (at 2e6 with ``--per-tassello-2e6`` and
+  ``ROADNOISE_MAX_BYTES=8000000000``: the inputs need 5 GiB);
+* python-control's ``forced_response`` on the same inputs (the fits' state space, 1022 states), at 2e5
+  samples on the 2-D road (its cost does not depend on the road).
+
+The forces are compared with the per-tassello simulation's (largest difference relative to the
+largest force). Peak memory is what numpy allocates during a call (tracemalloc), the road itself excluded.
 """
 
 from __future__ import annotations
@@ -26,22 +34,43 @@ import tracemalloc
 
 import control
 import numpy as np
+from scipy.signal import oaconvolve
 
 import roadnoise_utils as ru
 from roadnoise_utils.rm import aggregated, simulation
 from roadnoise_utils.road.input import profile_input, road_grid
 
 
-def _measure(function, repeat: int):
+def _measure(function, repeat: int, before=None):
     times, out, peak = [], None, 0
     for _ in range(repeat):
+        if before is not None:
+            before()
         tracemalloc.start()
         start = time.perf_counter()
         out = function()
         times.append(time.perf_counter() - start)
         peak = max(peak, tracemalloc.get_traced_memory()[1])
         tracemalloc.stop()
-    return times, peak, out
+    return np.array(times), peak, out
+
+
+def _range(values) -> str:
+    return f"{np.min(values):.3g} - {np.max(values):.3g}"
+
+
+def _ratio(slow, fast) -> str:
+    """The range of ``slow / fast`` over the repeats' extremes."""
+    return f"{np.min(slow) / np.max(fast):.3g} - {np.max(slow) / np.min(fast):.3g}"
+
+
+def _road(travel: float, lateral: bool):
+    rng = np.random.default_rng(1)
+    x = np.linspace(-2.0, travel + 2.0, int((travel + 4.0) / 1e-3) + 1)
+    z = 1e-5 * np.cumsum(rng.standard_normal(x.size))
+    if lateral:  # the tracks see the road shifted by their lateral position: as many different tracks as strips
+        return lambda s, y: np.interp(s + 5.0 * y, x, z)
+    return lambda s: np.interp(s, x, z)
 
 
 def main() -> None:
@@ -50,76 +79,88 @@ def main() -> None:
     parser.add_argument("--speed", type=float, default=30.0, help="m/s")
     parser.add_argument("--sample-rate", type=float, default=9600.0)
     parser.add_argument("--repeat", type=int, default=3)
-    parser.add_argument("--forced-response-2e6", action="store_true", help="also at 2e6 samples (~10 min)")
+    parser.add_argument("--sizes", type=int, nargs="+", default=[200_000, 2_000_000])
+    parser.add_argument("--per-tassello-2e6", action="store_true", help="also the per-tassello simulation at 2e6")
+    parser.add_argument("--no-forced-response", action="store_true", help="skip python-control (~1 min)")
     args = parser.parse_args()
     static = ru.stages.solve_static(args.tire)
     args.system = ru.assemble_fixed_hub(ru.stages.fit_tasselli(args.tire))
     sections = simulation.modal_sections(args.system)
     dt = 1.0 / args.sample_rate
+    args.memory = aggregated.memory_length(sections, dt)
     print(f"{args.tire}: {static.tasselli.n} tasselli, {len(sections.sections)} modal sections, "
-          f"memory {aggregated.memory_length(sections, dt)} steps; 2-D road at {args.speed:g} m/s, "
-          f"{args.sample_rate:g} Hz")  # fmt: skip
-    print("| samples | method | time (s) | peak memory (MB) | speed-up | largest difference |")
-    print("|---|---|---|---|---|---|")
-    for n in (200_000, 2_000_000):
-        _one_size(n, static, sections, args)
+          f"memory {args.memory} steps; {args.speed:g} m/s, {args.sample_rate:g} Hz, {args.repeat} repeats")  # fmt: skip
+    print("| samples | road | method | time (s) | peak memory (MB) | against the floor | largest difference |")
+    print("|---|---|---|---|---|---|---|")
+    forced = None
+    for n in args.sizes:
+        for lateral in (False, True):
+            forced = _one_size(n, lateral, static, sections, args, forced)
 
 
-def _one_size(n: int, static, sections, args) -> None:
-    dt = 1.0 / args.sample_rate
-    travel = (n - 1) * args.speed * dt
-    rng = np.random.default_rng(1)
-    x = np.linspace(-2.0, travel + 2.0, int((travel + 4.0) / 1e-3) + 1)
-    z = 1e-5 * np.cumsum(rng.standard_normal(x.size))
+def _floor(static, profile, args, travel: float):
+    """The road on the grid road_hub_force reads, and one overlap-add convolution per track and phase."""
+    # the grid alone (no inputs are formed: profile_input's memory check does not apply)
+    where = road_grid(static, profile, args.speed, (0.0, travel), args.sample_rate, check_memory=lambda *_: None)
+    o = where.oversample
+    kernel = np.random.default_rng(0).standard_normal(args.memory)
 
-    def profile(s):
-        return np.interp(s, x, z)
+    def run():
+        total = np.zeros(where.t.size + args.memory - 1)
+        for _, heights in where.track_heights():
+            z = heights(0, o * (where.t.size + 64)).reshape(-1, o).T
+            for phase in z:
+                total += oaconvolve(phase, kernel)[: total.size]
+        return total
+
+    return run
+
+
+def _one_size(n: int, lateral: bool, static, sections, args, forced):
+    travel = (n - 1) * args.speed / args.sample_rate
+    profile = _road(travel, lateral)
+    name = "3-D" if lateral else "2-D"
 
     def ours():
         return aggregated.road_hub_force(sections, static, profile, args.speed, (0.0, travel), args.sample_rate)
 
-    def per_tassello():
-        return simulation.simulate(
-            sections, profile_input(static, profile, args.speed, (0.0, travel), args.sample_rate)
+    floor_t, _, _ = _measure(_floor(static, profile, args, travel), args.repeat)
+    first_t, first_m, first = _measure(ours, args.repeat, before=aggregated._PATHS.clear)
+    again_t, again_m, again = _measure(ours, args.repeat)
+    difference = "-"
+    per_t = None
+    if n <= 200_000 or args.per_tassello_2e6:
+
+        def per_tassello():
+            return simulation.simulate(sections, profile_input(static, profile, args.speed, (0.0, travel),
+                                                               args.sample_rate))  # fmt: skip
+
+        per_t, per_m, per = _measure(per_tassello, 1)
+        error = np.abs(again.force - per.force).max() / np.abs(per.force).max()
+        difference = f"{error:.1e} (vs per tassello)"
+    rows = [
+        ("road_hub_force, first call", first_t, first_m, difference),
+        ("road_hub_force, repeated call", again_t, again_m, difference),
+        ("the floor: road + one FFT convolution per track and phase", floor_t, 0, "-"),
+    ]
+    if per_t is not None:
+        rows.append(("per tassello: profile_input + simulate", per_t, per_m, "-"))
+    for method, times, memory, diff in rows:
+        print(
+            f"| {n} | {name} | {method} | {_range(times)} | {memory / 1e6:.0f} | {_ratio(times, floor_t)}x | {diff} |"
         )
-
-    def road_alone():
-        where = road_grid(static, profile, args.speed, (0.0, travel), args.sample_rate)
-        return [heights(0, where.n_fine) for _, heights in where.track_heights()]
-
-    repeat = args.repeat if n <= 200_000 else 2
-    road_t, _, _ = _measure(road_alone, repeat)
-    agg_t, agg_m, agg = _measure(ours, repeat)
-    per_t, per_m, per = _measure(per_tassello, repeat)
-    difference = np.abs(agg.force - per.force).max() / np.abs(per.force).max()
-    print(f"| {agg.t.size} | aggregated (FFT per track) | {min(agg_t):.2f} - {max(agg_t):.2f} | "
-          f"{agg_m / 1e6:.0f} | {min(per_t) / max(agg_t):.1f} - {max(per_t) / min(agg_t):.1f}x | {difference:.1e} |")  # fmt: skip
-    print(f"| {per.t.size} | per tassello (profile_input + simulate) | {min(per_t):.2f} - {max(per_t):.2f} | "
-          f"{per_m / 1e6:.0f} | 1 | - |")  # fmt: skip
-    if n <= 200_000 or args.forced_response_2e6:
+    if n <= 200_000 and not lateral and not args.no_forced_response:
         road = profile_input(static, profile, args.speed, (0.0, travel), args.sample_rate)
-        ref_t, ref_m, ref = _measure(lambda: _forced_response_in_pieces(args.system, road.t, road.u), 1)
-        difference = np.abs(agg.force - ref).max() / np.abs(ref).max()
-        print(f"| {road.t.size} | python-control forced_response (inputs given) | {ref_t[0]:.1f} | {ref_m / 1e6:.0f} | "
-              f"{ref_t[0] / max(agg_t):.0f}x slower than aggregated | {difference:.1e} |")  # fmt: skip
-    print(f"| {agg.t.size} | road evaluation alone (the floor) | {min(road_t):.2f} - {max(road_t):.2f} | - | - | - |")
-
-
-def _forced_response_in_pieces(system, t: np.ndarray, u: np.ndarray, piece: int = 200_000) -> np.ndarray:
-    """python-control's ``forced_response`` over consecutive pieces sharing their end samples, each from the
-    state the previous one ended in (one piece when the record is no longer)."""
-    out = np.empty(t.size)
-    state = np.zeros(system.nstates)
-    start = 0
-    while start < t.size - 1:
-        stop = min(start + piece, t.size - 1)
-        response = control.forced_response(
-            system, T=t[start : stop + 1], U=u[:, start : stop + 1], X0=state, return_x=True
+        forced_t, forced_m, response = _measure(
+            lambda: control.forced_response(args.system, T=road.t, U=road.u).outputs, 1
         )
-        out[start : stop + 1] = np.ravel(response.outputs)
-        state = response.states[:, -1]
-        start = stop
-    return out
+        error = np.abs(again.force - np.ravel(response)).max() / np.abs(response).max()
+        print(f"| {n} | {name} | python-control forced_response (inputs given) | {_range(forced_t)} | "
+              f"{forced_m / 1e6:.0f} | {_ratio(forced_t, floor_t)}x | {error:.1e} |")  # fmt: skip
+        print(f"| {n} | {name} | forced_response / road_hub_force | first call {_ratio(forced_t, first_t)}x, "
+              f"repeated call {_ratio(forced_t, again_t)}x | - | - | - |")  # fmt: skip
+        forced = forced_t
+    return forced
 
 
 if __name__ == "__main__":

@@ -94,3 +94,33 @@ def test_many_blocks_read_the_road_once(tire, monkeypatch):
     width = -(-where.parts[0][2].shape[1] // where.oversample)
     assert one_block == where.n_fine + where.oversample * width
     assert np.abs(blocks.force - reference.force).max() < 1e-12 * np.abs(reference.force).max()
+
+
+def test_the_impulse_responses_are_the_simulation_of_a_unit_sample(tire):
+    """g_i + f_i (the start-up state's free response) is what the simulation gives for a unit first sample on input i:
+    the sums of exponentials against the per-section IIR filters."""
+    _, sections = tire
+    dt, n = 1.0 / 9600.0, 3000
+    g, f = aggregated.impulse_responses(sections, dt, n)
+    for i in (0, 17, sections.n_inputs - 1):
+        u = np.zeros((sections.n_inputs, n))
+        u[i, 0] = 1.0
+        t = dt * np.arange(n)
+        reference = simulation.simulate(sections, simulation.RoadInput(t, t, u, 1.0, "unit sample")).force
+        assert np.abs(g[i] + f[i] - reference).max() < 1e-10 * np.abs(reference).max()
+
+
+def test_a_repeated_call_reuses_the_path_and_gives_the_same_force(tire):
+    """The second call for the same tire, speed and sample rate takes the kept path (kernels and their spectra)
+    and gives the first call's force to the last bit; another speed builds another path."""
+    static, sections = tire
+    x, z = _rough(5)
+    profile = lambda s: np.interp(s, x, z)  # noqa: E731
+    aggregated._PATHS.clear()
+    first = aggregated.road_hub_force(sections, static, profile, 25.0, (0.0, 8.0), 9600.0)
+    assert len(aggregated._PATHS) == 1
+    again = aggregated.road_hub_force(sections, static, profile, 25.0, (0.0, 8.0), 9600.0)
+    assert len(aggregated._PATHS) == 1
+    np.testing.assert_array_equal(first.force, again.force)
+    aggregated.road_hub_force(sections, static, profile, 20.0, (0.0, 8.0), 9600.0)
+    assert len(aggregated._PATHS) == 2
