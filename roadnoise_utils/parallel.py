@@ -1,13 +1,14 @@
-"""Threads inside one computation: two on a machine of two cores, one where the processes already share them.
+"""Threads inside one computation: the pieces of a stage on the machine's cores (two at most).
 
 The numerics that split into independent pieces (the cross-section tire's frequency blocks and
 harmonics, the modal sections of a simulation, a 3-D road's wavenumber blocks) run them on
-:func:`threads` threads: LAPACK, BLAS, the FFTs, ``lfilter`` and the sparse factorisations release
-the GIL. Where several processes already share the cores (the test suite's workers, the
-reproduction's notebooks side by side: both set ``OMP_NUM_THREADS=1``), a second thread per process
-only adds contention, so the BLAS thread setting decides: ``OMP_NUM_THREADS`` (or
-``OPENBLAS_NUM_THREADS``) of 1 gives one thread. The pieces and the order they are summed in do not
-depend on the count: the results are the same to the last bit.
+:func:`threads` threads: LAPACK, BLAS (one thread each), the FFTs, ``lfilter`` and the sparse
+factorisations release the GIL. Beside another process (the test suite's second worker, the
+reproduction's second notebook) the second thread only shares a busy core, at little cost (these
+threads wait on locks, they do not spin as BLAS pools do); when that process waits for a stage this
+one computes, or has finished, it halves the stage's time. ``ROADNOISE_THREADS=1`` runs everything
+on one thread. The pieces and the order they are summed in do not depend on the count: the results
+are the same to the last bit.
 """
 
 from __future__ import annotations
@@ -25,11 +26,13 @@ MAX_THREADS = 2
 
 
 def threads() -> int:
-    """Threads for one computation: 1 when ``OMP_NUM_THREADS`` or ``OPENBLAS_NUM_THREADS`` is 1, else up to
-    :data:`MAX_THREADS` (and the cores there are)."""
-    for name in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS"):
-        if os.environ.get(name, "").strip() == "1":
-            return 1
+    """Threads for one computation: ``ROADNOISE_THREADS`` (1 or 2), else up to :data:`MAX_THREADS` (and the cores
+    there are)."""
+    setting = os.environ.get("ROADNOISE_THREADS", "").strip()
+    if setting:
+        if setting not in ("1", "2"):
+            raise ValueError(f"ROADNOISE_THREADS = {setting!r}: valid values are 1 and 2")
+        return int(setting)
     return max(1, min(MAX_THREADS, os.cpu_count() or 1))
 
 

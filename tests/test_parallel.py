@@ -1,4 +1,4 @@
-"""Threads inside one computation: the count follows the BLAS setting, the results do not depend on it."""
+"""Threads inside one computation: the count is the setting or the cores, the results do not depend on it."""
 
 from __future__ import annotations
 
@@ -9,12 +9,18 @@ from roadnoise_utils import parallel
 from roadnoise_utils.rm import simulation
 
 
-@pytest.mark.parametrize(("setting", "expected"), [("1", 1), (" 1 ", 1), ("2", None), ("", None)])
-def test_one_blas_thread_means_one_thread(monkeypatch, setting, expected):
-    monkeypatch.delenv("OPENBLAS_NUM_THREADS", raising=False)
-    monkeypatch.setenv("OMP_NUM_THREADS", setting)
+@pytest.mark.parametrize(("setting", "expected"), [("1", 1), (" 2 ", 2), ("", None)])
+def test_the_thread_count_is_the_setting_or_the_cores(monkeypatch, setting, expected):
+    monkeypatch.setenv("ROADNOISE_THREADS", setting)
     count = parallel.threads()
     assert count == expected if expected else 1 <= count <= parallel.MAX_THREADS
+
+
+@pytest.mark.parametrize("setting", ["3", "two", "0"])
+def test_a_thread_count_out_of_range_is_refused_by_name(monkeypatch, setting):
+    monkeypatch.setenv("ROADNOISE_THREADS", setting)
+    with pytest.raises(ValueError, match="ROADNOISE_THREADS"):
+        parallel.threads()
 
 
 def test_thread_map_keeps_the_order():
@@ -36,7 +42,6 @@ def test_a_simulation_is_the_same_to_the_last_bit_on_one_thread_and_two(monkeypa
     u = rng.standard_normal((3, t.size))
     forces = []
     for setting in ("1", "2"):
-        monkeypatch.setenv("OMP_NUM_THREADS", setting)
-        monkeypatch.setenv("OPENBLAS_NUM_THREADS", setting)
+        monkeypatch.setenv("ROADNOISE_THREADS", setting)
         forces.append(simulation.simulate(system, simulation.RoadInput(t, t, u, 1.0, "noise")).force)
     np.testing.assert_array_equal(forces[0], forces[1])
