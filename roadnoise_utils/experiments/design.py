@@ -357,6 +357,11 @@ class DesignResult:
     cpu_seconds: float
 
 
+#: Warnings a design's computation can meet that say nothing of its numbers: a file another part of the
+#: process left open, collected meanwhile; a library's deprecation. Not kept with the design's values.
+_NOT_THE_DESIGNS = (ResourceWarning, DeprecationWarning, PendingDeprecationWarning)
+
+
 def evaluate_design(
     spec: Spec, outputs: Sequence[str], conditions: SweepConditions, cache: bool = True
 ) -> DesignResult:
@@ -374,6 +379,8 @@ def evaluate_design(
         computed.append(True)
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
+            for unrelated in _NOT_THE_DESIGNS:  # the process's (a collected file, an import), not the numbers'
+                warnings.simplefilter("ignore", unrelated)
             values = design_outputs(spec, outputs, conditions)
         return values, tuple(dict.fromkeys(str(w.message) for w in caught))
 

@@ -182,3 +182,23 @@ def test_the_default_cluster_workers_keep_glibc_s_own_trim_threshold():
         client.close()
         cluster.close()
     assert list(seen.values()) == [(None, os.environ.get("OMP_NUM_THREADS", "1"))]
+
+
+def test_a_warning_from_elsewhere_in_the_process_is_not_the_design_s(fresh_cache, monkeypatch):
+    """A file collected during a design (a ResourceWarning) or a library's deprecation is not kept as the design's
+    warning; the design's own (a RoadnoiseWarning) is."""
+    import warnings
+
+    original = design.design_outputs
+
+    def noisy(spec, outputs, conditions):
+        warnings.warn("unclosed file", ResourceWarning)
+        warnings.warn("old call", DeprecationWarning)
+        if spec.operating.inflation_pressure == 2.2e5:
+            ru.guards.warn("a doubtful fit")
+        return original(spec, outputs, conditions)
+
+    monkeypatch.setattr(design, "design_outputs", noisy)
+    with pytest.warns(ru.guards.RoadnoiseWarning, match="1 of 2 designs gave warnings"):
+        table = ru.experiments.sweep({PRESSURE: [1.9e5, 2.2e5]}, ["K_v"], scheduler="serial", progress=False)
+    assert table["warnings"].tolist() == ["", "a doubtful fit"]
