@@ -192,8 +192,8 @@ def test_a_warning_from_elsewhere_in_the_process_is_not_the_design_s(fresh_cache
     original = design.design_outputs
 
     def noisy(spec, outputs, conditions):
-        warnings.warn("unclosed file", ResourceWarning)
-        warnings.warn("old call", DeprecationWarning)
+        warnings.warn("unclosed file", ResourceWarning, stacklevel=2)
+        warnings.warn("old call", DeprecationWarning, stacklevel=2)
         if spec.operating.inflation_pressure == 2.2e5:
             ru.guards.warn("a doubtful fit")
         return original(spec, outputs, conditions)

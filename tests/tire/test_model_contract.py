@@ -1,8 +1,8 @@
 """The tire-model interface's contract, on every registered model: what the RM pipeline relies on.
 
-Each model is tried on a small tire where it has one (the ring on a coarse mesh; the
-cross-section on its tire file, whose stages the other tests cache; the tire from files written
-from the coarse ring): its footprint partitions the contact nodes with weights summing to 1, the
+Each model is tried on a small tire (the ring on a coarse mesh; the cross-section on its coarse
+grid, ``coarse_section``, whose stages the cavity's tests share; the tire from files written from
+the coarse ring): its footprint partitions the contact nodes with weights summing to 1, the
 load balances, the tasselli's FRFs add up to H_tot (paper Eq. i), H_tot(0) = -G_H(0) = K_v, its
 files round-trip exactly, and a capability it lacks says so by name.
 """
@@ -20,8 +20,9 @@ COARSE_RING = {"mesh.n_strips": 7, "mesh.n_elements": 260, "tasselli.strips_per_
 #: statics let it slide (5.5e-5 on the 165/65 R14), the cross-section's arc spreading (5e-6).
 STATIC_TOLERANCE = 1e-3
 #: The hub force against the load (-): the cross-section's rim reaction sees its contact forces spread
-#: over an arc of its grid (the sinc of half a grid step, 4.7e-6 on the 165/65 R14); the ring's is 1e-12.
-HUB_TOLERANCE = 1e-5
+#: over an arc of its grid (the sinc of half a grid step: 4.7e-6 on the 165/65 R14's 3 mm grid, 1.8e-5 on
+#: the coarse 6 mm one); the ring's is 1e-12.
+HUB_TOLERANCE = 5e-5
 #: sum_i H_i against H_tot (-): both computed from one solve on the FE models (round-off, 1e-10).
 SUPERPOSITION_TOLERANCE = 1e-9
 
@@ -36,12 +37,12 @@ def exported(tmp_path_factory):
 
 
 @pytest.fixture(scope="module", params=sorted(REGISTRY))
-def model(request, exported):
+def model(request, exported, coarse_section):
     kind = request.param
     if kind == "ring":
         return exported[0]
     if kind == "cross-section":
-        return ru.tire_model("165_65R14_cross_section")
+        return ru.tire_model(coarse_section)
     if kind == "frf-file":
         return ru.tire_model(exported[1])
     pytest.fail(f"no small test tire for the registered model {kind!r}: add one here")

@@ -91,7 +91,7 @@ def frf(coarse):
 def test_static_footprint_frf_is_the_vertical_stiffness(frf):
     flat = frf.static
     spread = np.sinc(flat.grid.dtheta / (2 * np.pi))
-    # exact but for the quasi-static harmonics' cubic interpolation in n (6e-9 on the coarse grid, 2e-7 on the default)
+    # exact but for the quasi-static harmonics' cubic interpolation in n (5e-9 on the coarse grid, 2e-7 on the default)
     assert frf.H_tot[0].real / (flat.vertical_stiffness * spread) - 1 == pytest.approx(0.0, abs=1e-6)
     assert abs(frf.H_tot[0].imag) < 1e-8 * abs(frf.H_tot[0])
     # the tasselli partition the points: their FRFs add up to the whole footprint's
