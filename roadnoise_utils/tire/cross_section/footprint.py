@@ -26,6 +26,7 @@ negative, the force on the hub, as for the ring model.
 
 from __future__ import annotations
 
+from collections import deque
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, replace
 
@@ -297,8 +298,9 @@ class EvenFootprint:
         (default the tables themselves: each frequency's gather table of the receptance rows of the grid
         columns ``columns``, :meth:`_tables`), in the order of the blocks.
 
-        Two blocks at a time, one per thread, each whole (its harmonics' receptances, its tables and
-        ``work``): LAPACK, BLAS and numpy's loops release the GIL, so the two cores share every step.
+        On :func:`roadnoise_utils.parallel.threads` threads, a block each, whole (its harmonics' receptances,
+        its tables and ``work``): LAPACK, BLAS and numpy's loops release the GIL, so the cores share every
+        step. At most two blocks are held at once.
         """
         laws = self.tire.ops.laws if laws is None else laws
         parts = [slice(start, min(start + BLOCK, len(omegas))) for start in range(0, len(omegas), BLOCK)]
@@ -307,12 +309,13 @@ class EvenFootprint:
             tables = self._tables(np.asarray(omegas[part], float), laws, inertia, columns)
             return tables if work is None else work(part, tables)
 
-        with ThreadPoolExecutor(max_workers=threads()) as workers, threadpool_limits(1):
-            pending = [workers.submit(run, part) for part in parts[:2]]
+        count = threads()
+        with ThreadPoolExecutor(max_workers=count) as workers, threadpool_limits(1):
+            pending = deque(workers.submit(run, part) for part in parts[:count])
             for index, part in enumerate(parts):
-                result = pending[index].result()
-                if index + 2 < len(parts):
-                    pending.append(workers.submit(run, parts[index + 2]))
+                result = pending.popleft().result()
+                if index + count < len(parts):
+                    pending.append(workers.submit(run, parts[index + count]))
                 yield part, result
 
     def receptances(self, omegas: np.ndarray, laws: dict | None = None, inertia: bool = True):
