@@ -92,10 +92,9 @@ def main() -> None:
           f"memory {args.memory} steps; {args.speed:g} m/s, {args.sample_rate:g} Hz, {args.repeat} repeats")  # fmt: skip
     print("| samples | road | method | time (s) | peak memory (MB) | against the floor | largest difference |")
     print("|---|---|---|---|---|---|---|")
-    forced = None
     for n in args.sizes:
         for lateral in (False, True):
-            forced = _one_size(n, lateral, static, sections, args, forced)
+            _one_size(n, lateral, static, sections, args)
 
 
 def _floor(static, profile, args, travel: float):
@@ -116,7 +115,7 @@ def _floor(static, profile, args, travel: float):
     return run
 
 
-def _one_size(n: int, lateral: bool, static, sections, args, forced):
+def _one_size(n: int, lateral: bool, static, sections, args) -> None:
     travel = (n - 1) * args.speed / args.sample_rate
     profile = _road(travel, lateral)
     name = "3-D" if lateral else "2-D"
@@ -159,8 +158,6 @@ def _one_size(n: int, lateral: bool, static, sections, args, forced):
               f"{forced_m / 1e6:.0f} | {_ratio(forced_t, floor_t)}x | {error:.1e} |")  # fmt: skip
         print(f"| {n} | {name} | forced_response / road_hub_force | first call {_ratio(forced_t, first_t)}x, "
               f"repeated call {_ratio(forced_t, again_t)}x | - | - | - |")  # fmt: skip
-        forced = forced_t
-    return forced
 
 
 if __name__ == "__main__":

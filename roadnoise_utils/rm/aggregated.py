@@ -148,12 +148,14 @@ def _phases(values: np.ndarray, oversample: int, width: int) -> np.ndarray:
 @dataclass(frozen=True, eq=False)
 class _Track:
     """One road track's kernels: the tasselli it drives (``rows``), their kernels by phase ``k_p`` (rows, O, width),
-    the sections those tasselli drive (``sections``, indices) and the track's kernels :math:`C_p` (O, L + width - 1)
-    with their spectra per overlap-save length (filled on first use)."""
+    the sections those tasselli drive (``sections``, indices) and each one's tassello among ``rows`` (``section_rows``),
+    and the track's kernels :math:`C_p` (O, L + width - 1) with their spectra per overlap-save length (filled on
+    first use)."""
 
     rows: np.ndarray
     k_p: np.ndarray
     sections: np.ndarray
+    section_rows: np.ndarray
     c_p: np.ndarray
     spectra: dict = field(default_factory=dict)
 
@@ -188,7 +190,8 @@ def _track(terms: _SectionTerms, powers: _Powers, kernels: np.ndarray, rows: np.
     position = np.full(terms.first.size, -1)
     position[rows] = np.arange(rows.size)
     sections = np.nonzero(position[terms.source] >= 0)[0]
-    mine = k_p[position[terms.source[sections]]]  # (S_t, O, width): each section's tassello's kernels
+    section_rows = position[terms.source[sections]]
+    mine = k_p[section_rows]  # (S_t, O, width): each section's tassello's kernels
     e = terms.e[sections][:, None]
     # T[t] = sum_{j >= t} E^(j - t) K[j]: T[width] = 0, T[t] = K[t] + E T[t + 1]
     tails = np.zeros((width + 1,) + mine.shape[:2], complex)
@@ -202,7 +205,7 @@ def _track(terms: _SectionTerms, powers: _Powers, kernels: np.ndarray, rows: np.
     for l_index in range(width):
         lag = l_index - (width - 1)  # l
         c_p[:, l_index] = terms.first[rows] @ k_p[:, :, -lag] + np.real(np.sum(a * tails[1 - lag], axis=0))
-    return _Track(rows=rows, k_p=k_p, sections=sections, c_p=c_p)
+    return _Track(rows=rows, k_p=k_p, sections=sections, section_rows=section_rows, c_p=c_p)
 
 
 #: The last paths built (:func:`road_path`), most recent last.
@@ -333,10 +336,7 @@ def _start_terms(path: RoadPath, track: _Track, start: np.ndarray, step: float) 
     before = np.zeros((track.rows.size, width))  # column b - 1: u_i[-b]
     for back in range(1, width):
         before[:, back - 1] = step * np.einsum("ipr,pr->i", k_p[:, :, back:], start[:, : width - back])
-    position = np.full(path.terms.first.size, -1)
-    position[track.rows] = np.arange(track.rows.size)
-    s = track.sections
-    mine = position[path.terms.source[s]]
+    s, mine = track.sections, track.section_rows
     alpha = np.zeros(path.terms.e.size, complex)
     alpha[s] = -path.terms.b[s] * first[mine] - path.terms.a[s] * np.einsum("sb,sb->s", path.tail[s], before[mine])
     return alpha
