@@ -9,7 +9,9 @@ Run on demand (never as a timed test)::
 Times, as ranges over the repeats (shared machines are noisy): the one-sided quasi-static run
 (contact solves) and the 30 km/h run (Newmark, 0.7 m of travel) on the refined tire of
 notebook 08, the same two runs of the linear RM chain (notebook 04) and the linear FE
-frequency-domain passage (its second method). Tire stages are built once before timing;
+frequency-domain passage (its second method), each also as a ratio to that FE passage's time
+(the best of each run's repeats over the FE passage's best: the reference timed in the same
+run, so a loaded machine shifts both). Tire stages are built once before timing;
 the one-sided runs include their own set-up (factorisation, dynamic compliance). With
 ``--cross-section`` the cross-section tire's runs too (notebook 08, section 6): the reduction of
 its harmonics (once) and its quasi-static and 30 km/h runs.
@@ -89,10 +91,11 @@ def main() -> None:
     print(
         f"tire {spec.name}, cleat {cleat.height * 1e3:.0f} x {cleat.base * 1e3:.0f} mm, travel {conditions.distance} m, {args.repeats} repeats"
     )
-    print("| run | elements | time (s), min - max | peak (N) | samples |")
-    print("|---|---|---|---|---|")
+    reference = next(times for label, _, times, _, _ in rows if label.startswith("linear FE"))
+    print("| run | elements | time (s), min - max | x the linear FE run (best / best) | peak (N) | samples |")
+    print("|---|---|---|---|---|---|")
     for label, elements, times, peak, samples in rows:
-        print(f"| {label} | {elements} | {span(times)} | {peak:.0f} | {samples} |")
+        print(f"| {label} | {elements} | {span(times)} | {min(times) / min(reference):.2f} | {peak:.0f} | {samples} |")
     print(f"peak Python memory of the one-sided {cleat.dynamic_kmh:.0f} km/h run: {peak_memory / 1e6:.0f} MB")
 
 

@@ -10,7 +10,8 @@ Times, as ranges over the repeats (shared machines are noisy), of both tire mode
 FRFs 0-400 Hz every 1 Hz (cross-section: the footprint receptance and hub transfer of
 :mod:`roadnoise_utils.tire.cross_section.footprint`; ring: :func:`roadnoise_utils.tire.ring.frf.frf_visco`,
 the direct sweep of the same quantity), and the paper's modal reduction (Fig. 4) with the
-modal FRFs it gives in place of the direct sweep. Peak memory by ``tracemalloc`` (Python allocations,
+modal FRFs it gives in place of the direct sweep. "x ring" is each cross-section step's best
+time over the ring's best for the same step, timed in the same run. Peak memory by ``tracemalloc`` (Python allocations,
 numpy arrays included) of the last repeat of each step.
 """
 
@@ -84,9 +85,11 @@ def main() -> None:
     t, _, peak = timed(args.repeats, ring_reduced.model.frf, freqs)
     rows.append(("ring", "modal FRFs (H_i, H_tot, G_H), 0-400 Hz at 1 Hz", t, peak))
 
-    print(f"{'model':14s} {'step':62s} {'time (s)':>14s} {'peak (MB)':>10s}")
-    for model, step, t, peak in rows:
-        print(f"{model:14s} {step:62s} {span(t):>14s} {peak:10.0f}")
+    half = len(rows) // 2  # the cross-section's steps, then the ring's same steps in the same order
+    ratios = [min(a[2]) / min(b[2]) for a, b in zip(rows[:half], rows[half:])] + [1.0] * half
+    print(f"{'model':14s} {'step':62s} {'time (s)':>14s} {'x ring':>8s} {'peak (MB)':>10s}")
+    for (model, step, t, peak), ratio in zip(rows, ratios):
+        print(f"{model:14s} {step:62s} {span(t):>14s} {ratio:8.1f} {peak:10.0f}")
     print(f"process peak resident memory: {resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024:.0f} MB")
 
 

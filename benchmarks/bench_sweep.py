@@ -13,7 +13,8 @@ wall time of a design where it ran (``table.attrs["design_seconds"]``): about th
 modes when a core is free for each worker, longer on the cluster when the host's cores are
 taken by other work (the 1-minute load average is printed; "CPU / wall" is the share of a core a
 design had, below 1 when it waited for one). Both must give the same table.
-Ranges over the repeats: the machines are shared.
+Ranges over the repeats: the machines are shared; the speed-up of the cluster is the ratio of
+the two wall times of each repeat (run one after the other).
 """
 
 from __future__ import annotations
@@ -90,6 +91,8 @@ def main() -> None:
             f"| {label} | {t.min():.1f} - {t.max():.1f} | {60 * n / t.max():.1f} - {60 * n / t.min():.1f} "
             f"| {t.min() / n:.2f} - {t.max() / n:.2f} | {e.min():.2f} - {e.max():.2f} | {c.min():.2f} - {c.max():.2f} |"
         )
+    speedup = np.array(times["serial"]) / np.array(times["dask"])  # each repeat ran both, one after the other
+    print(f"serial over dask wall time, per repeat: {speedup.min():.2f} - {speedup.max():.2f}x")
     print(f"cluster start-up with the workers' imports, and close: {min(start):.1f} - {max(start):.1f} s")
     print("tables equal: yes")
 

@@ -187,26 +187,17 @@ assert test.quasi_static.force_balance < 1e-9 and test.dynamic.max_penetration <
 # %%
 # NBVAL_CHECK_OUTPUT
 # Mesh convergence (N)
-cleat_args = (cleat.height, cleat.base, cleat.shape, cleat.drum_radius, conditions.distance)
-coarse = ru.stages.load_tire(tire_name)
-for elements in (coarse.mesh.n_elements, conditions.n_elements):
-    spec = ru.experiments.one_sided_cleat.refined_tire(tire_name, elements)
-    run = ru.stages.one_sided_run(spec, 0.0, *cleat_args)
-    print(f"{elements:5d} elements: quasi-static peak {run.peak_force:6.0f} N")
-coarse_dynamic = ru.stages.one_sided_run(coarse, cleat.dynamic_speed, *cleat_args)
-print(
-    f"{cleat.dynamic_kmh:.0f} km/h peak: {coarse_dynamic.peak_force:.0f} N at {coarse.mesh.n_elements} elements, "
-    f"{test.dynamic.peak_force:.0f} N at {conditions.n_elements}"
-)
+study = ru.experiments.one_sided_cleat.convergence(tire_name, conditions=conditions)
+for elements, peak in study.quasi_static_peaks.items():
+    print(f"{elements:5d} elements: quasi-static peak {peak:6.0f} N")
+(coarse_n, coarse_peak), (fine_n, fine_peak) = study.dynamic_peaks.items()
+print(f"{cleat.dynamic_kmh:.0f} km/h peak: {coarse_peak:.0f} N at {coarse_n} elements, {fine_peak:.0f} N at {fine_n}")
 
 # %%
 # NBVAL_CHECK_OUTPUT
 # Time-step convergence of the dynamic peak on the tire file's mesh
-half_step = ru.stages.one_sided_run(coarse, cleat.dynamic_speed, *cleat_args, dt=0.5 * coarse_dynamic.dt)
-print(
-    f"dt = {coarse_dynamic.dt * 1e6:.0f} us: {coarse_dynamic.peak_force:.1f} N; dt = {half_step.dt * 1e6:.0f} us: "
-    f"{half_step.peak_force:.1f} N ({half_step.peak_force / coarse_dynamic.peak_force - 1:+.2%})"
-)
+(dt, peak), (half_dt, half_peak) = study.step_peaks.items()
+print(f"dt = {dt * 1e6:.0f} us: {peak:.1f} N; dt = {half_dt * 1e6:.0f} us: {half_peak:.1f} N ({half_peak / peak - 1:+.2%})")
 
 # %% [markdown]
 # **Vanishing speed.** As the speed goes to zero the dynamic run must tend to the quasi-static
@@ -216,12 +207,10 @@ print(
 # %%
 # NBVAL_CHECK_OUTPUT
 # Dynamic runs at the paper's base-curve speed (0.36 km/h) and slower vs the quasi-static run, tire file's mesh
-quasi_coarse = ru.stages.one_sided_run(coarse, 0.0, *cleat_args[:-1], conditions.sweep_distance)
-for speed, dt in ((0.1, 5e-3), (0.03, 1e-2)):
-    slow = ru.stages.one_sided_run(coarse, speed, *cleat_args[:-1], conditions.sweep_distance, dt=dt)
+for speed, peak in study.slow_peaks.items():
+    quasi_static = study.slow_quasi_static
     print(
-        f"{speed * 3.6:.2f} km/h: peak {slow.peak_force:.1f} N, quasi-static {quasi_coarse.peak_force:.1f} N "
-        f"({slow.peak_force / quasi_coarse.peak_force - 1:+.2%})"
+        f"{speed * 3.6:.2f} km/h: peak {peak:.1f} N, quasi-static {quasi_static:.1f} N ({peak / quasi_static - 1:+.2%})"
     )
 
 # %% [markdown]

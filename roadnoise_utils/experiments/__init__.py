@@ -1,20 +1,20 @@
 """The paper's tests, each reading its ``data/conditions`` file once and returning a typed result.
 
-=============================  ================================================  ==========
-experiment                     what it runs                                      notebook
-=============================  ================================================  ==========
-:func:`cleat_test`             drum cleat, quasi-static and dynamic, FE check    04
-:func:`one_sided_cleat_test`   the same with one-sided contact of the FE tire    08
-:func:`moving_hub_check`       RM moving hub vs the FE tire with its hub free    05
-:func:`road_test`              textures flowing through the footprint            06
-:func:`quarter_car`            the corner on the road test, spectra              07
-:func:`calibration_table`      the tire against its calibration targets          01
-:func:`band_extension`         the chain at 0-250 and 0-400 Hz, cleat and road   10
-:func:`whole_car_run`          the whole car on a 3-D road, spectra, checks       11
-:func:`cavity.cavity_frfs`     the tire's FRFs with and without its air cavity    14
-:func:`sweep`                  a grid or sample of tire designs on dask -> table  12
-:func:`tire_as_files`          any tire model written as a tire from files       13
-=============================  ================================================  ==========
+============================  =================================================  ========
+experiment                    what it runs                                       notebook
+============================  =================================================  ========
+:func:`cleat_test`            drum cleat, quasi-static and dynamic, FE check     04
+:func:`one_sided_cleat_test`  the same with one-sided contact of the FE tire     08
+:func:`moving_hub_check`      RM moving hub vs the FE tire with its hub free     05
+:func:`road_test`             textures flowing through the footprint             06
+:func:`quarter_car`           the corner on the road test, spectra               07
+:func:`calibration_table`     the tire against its calibration targets           01
+:func:`band_extension`        the chain at 0-250 and 0-400 Hz, cleat and road    10
+:func:`whole_car_run`         the whole car on a 3-D road, spectra, checks       11
+:func:`cavity.cavity_frfs`    the tire's FRFs with and without its air cavity    14
+:func:`sweep`                 a grid or sample of tire designs on dask -> table  12
+:func:`tire_as_files`         any tire model written as a tire from files        13
+============================  =================================================  ========
 
 ``*_conditions`` functions resolve a test's defaults (an argument left at ``None`` is the
 paper's value); the numerics below them take explicit arguments and read no TOML.

@@ -3,7 +3,7 @@
 :func:`corner_setup` builds, once, what every corner computation needs — the vehicle file, its
 tire's cached stages (loaded state, tassello fits, hub fit), the corner model closed through
 :math:`G_H` and the fast form of the fixed-hub tire; :func:`quarter_car` drives it over each
-texture of the road test (:mod:`.road`) and returns the time histories and Welch spectra.
+texture of the road test (:mod:`~roadnoise_utils.experiments.road`) and returns the time histories and Welch spectra.
 """
 
 from __future__ import annotations

@@ -190,7 +190,7 @@ def membrane_forces(tire: SectionTire) -> pd.DataFrame:
 
 
 def _thickness_jacobian(mesh, element: int, eta: np.ndarray) -> np.ndarray:
-    """|dx/deta| at the middle of the element (m per unit eta)."""
+    """The modulus ``|dx/deta|`` at the middle of the element (m per unit eta)."""
     from ..tire.cross_section.waveguide import lagrange3
 
     nodes = mesh.elements[element]

@@ -10,17 +10,17 @@ every name and value, and builds every design's validated spec, before any work 
 What a design gives (:data:`OUTPUTS`) comes from the package's tested experiments, called as
 they are, on either tire model:
 
-===================  ===========================================================  ===========
-output               computed by                                                  cost (ring)
-===================  ===========================================================  ===========
-``K_v``, footprint   :func:`roadnoise_utils.repro.stages.solve_static` (flat)     ~0.1 s
-``f1``, ``zeta1``    :func:`.calibration.calibration_values` (direct FRF, flat)   ~2 s
-``cleat``            :func:`.cleat.cleat_test` (linear RM chain on the drum)       ~3 s more
-``one_sided``        :func:`.one_sided_cleat.one_sided_cleat_test` (as the model    ~20 s more
-                     runs it: :meth:`.tire.model.TireModel.one_sided_setup`)
-``hub_acceleration`` :func:`.corner.corner_setup` on the vehicle file, the        ~1 s more
-                     predicted hub PSD on the road test's texture, its band RMS
-===================  ===========================================================  ===========
+====================  ===========================================================  ===========
+output                computed by                                                  cost (ring)
+====================  ===========================================================  ===========
+``K_v``, footprint    :func:`roadnoise_utils.repro.stages.solve_static` (flat)     ~0.1 s
+``f1``, ``zeta1``     :func:`.calibration.calibration_values` (direct FRF, flat)   ~2 s
+``cleat``             :func:`.cleat.cleat_test` (linear RM chain on the drum)      ~3 s more
+``one_sided``         :func:`.one_sided_cleat.one_sided_cleat_test` (as the model   ~20 s more
+                      runs it: :meth:`.tire.model.TireModel.one_sided_setup`)
+``hub_acceleration``  :func:`.corner.corner_setup` on the vehicle file, the        ~1 s more
+                      predicted hub PSD on the road test's texture, its band RMS
+====================  ===========================================================  ===========
 
 :func:`evaluate_design` computes one design's outputs and caches them as one stage
 (:func:`roadnoise_utils.repro.cache.cached`): keyed by the design's full spec, the outputs and

@@ -7,7 +7,7 @@ off the drum, which no linear model can do. Here the FE tire (not the RM chain) 
 with one-sided tread contact (:mod:`roadnoise_utils.tire.contact`), on a mesh refined
 along the circumference (``[one_sided] n_elements`` of ``data/conditions/cleat_test.toml``),
 and is compared with the *measured* values; the linear chain stays compared with the paper's
-*simulation* (:mod:`.cleat`).
+*simulation* (:mod:`~roadnoise_utils.experiments.cleat`).
 """
 
 from __future__ import annotations
@@ -33,6 +33,10 @@ from .conditions import load_conditions, resolve
 MAX_ELEMENTS = 2400
 #: Record of the band-limiting FFT (s): long enough for the decay.
 RECORD = 1.0
+#: Vanishing-speed runs of :func:`convergence`: (speed in m/s, time step in s). 0.1 m/s is the
+#: paper's base-curve speed (0.36 km/h, *Validation of the Model for Fixed Hub*); 0.03 m/s is
+#: slower still. The steps keep about 0.5 mm and 0.3 mm of travel per step.
+SLOW_RUNS = ((0.1, 5e-3), (0.03, 1e-2))
 
 
 @dataclass(frozen=True)
@@ -169,6 +173,68 @@ def one_sided_cleat_test(tire: Tire = PAPER_TIRE, *, conditions: OneSidedConditi
     quasi = _run(setup, test, 0.0, setup.quasi_static_distance)
     dynamic = in_model_band(setup, _run(setup, test, test.cleat.dynamic_speed, test.distance))
     return OneSidedCleatTest(setup.model.spec, test, static, quasi, dynamic, *peaks_and_decay(dynamic))
+
+
+@dataclass(frozen=True)
+class Convergence:
+    """How the one-sided runs converge in mesh, time step and speed (every run a cached stage).
+
+    Attributes
+    ----------
+    quasi_static_peaks : dict of int to float
+        Quasi-static peak (N) per mesh (elements around the circumference): the tire file's
+        mesh, then the refined one of the test.
+    dynamic_peaks : dict of int to float
+        Peak at the dynamic speed (N) on the same two meshes.
+    step_peaks : dict of float to float
+        Peak at the dynamic speed (N) on the tire file's mesh per time step (s): the model's
+        step, then half of it.
+    slow_peaks : dict of float to float
+        Peak (N) per vanishing speed (m/s, :data:`SLOW_RUNS`) on the tire file's mesh over the
+        sweep's travel.
+    slow_quasi_static : float
+        The quasi-static peak over that travel on that mesh (N): what the slow runs tend to.
+    """
+
+    quasi_static_peaks: dict[int, float]
+    dynamic_peaks: dict[int, float]
+    step_peaks: dict[float, float]
+    slow_peaks: dict[float, float]
+    slow_quasi_static: float
+
+
+def convergence(
+    tire: Tire = PAPER_TIRE, *, conditions: OneSidedConditions | None = None, slow_runs=SLOW_RUNS
+) -> Convergence:
+    """The one-sided cleat test on the tire file's mesh and the refined one, at the model's time
+    step and half of it, and at vanishing speeds against the quasi-static run.
+
+    The dynamic run on the refined mesh is the test's own (:func:`one_sided_cleat_test`); the
+    other runs are the ring tire's stages at their default steps. Raises
+    :class:`~roadnoise_utils.tire.model.NotApplicable` for a model that cannot be refined.
+    """
+    test = one_sided_conditions() if conditions is None else conditions
+    c = test.cleat
+    drum = (c.height, c.base, c.shape, c.drum_radius)
+    coarse = stages.load_tire(tire)
+    quasi = {
+        n: stages.one_sided_run(refined_tire(tire, n), 0.0, *drum, test.distance).peak_force
+        for n in (coarse.mesh.n_elements, test.n_elements)
+    }
+    dynamic = stages.one_sided_run(coarse, c.dynamic_speed, *drum, test.distance)
+    half = stages.one_sided_run(coarse, c.dynamic_speed, *drum, test.distance, dt=0.5 * dynamic.dt)
+    refined_dynamic = one_sided_cleat_test(tire, conditions=test).dynamic
+    slow = {
+        speed: stages.one_sided_run(coarse, speed, *drum, test.sweep_distance, dt=dt).peak_force
+        for speed, dt in slow_runs
+    }
+    return Convergence(
+        quasi_static_peaks=quasi,
+        dynamic_peaks={coarse.mesh.n_elements: dynamic.peak_force, test.n_elements: refined_dynamic.peak_force},
+        step_peaks={dynamic.dt: dynamic.peak_force, half.dt: half.peak_force},
+        slow_peaks=slow,
+        slow_quasi_static=stages.one_sided_run(coarse, 0.0, *drum, test.sweep_distance).peak_force,
+    )
 
 
 def raw_dynamic(tire: Tire = PAPER_TIRE, *, conditions: OneSidedConditions | None = None) -> ContactRun:

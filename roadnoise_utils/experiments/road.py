@@ -5,7 +5,7 @@ smooth texture (whose spectra the paper does not give: ours are ISO 8608 classes
 the megatexture band, ``data/roads``). :func:`road_test_conditions` reads
 ``data/conditions/road_test.toml`` once and resolves every default; :func:`road_test` builds
 the tassello inputs of each texture for a tire (notebook 06), which the quarter car
-(:mod:`.corner`, notebook 07) is driven by.
+(:mod:`~roadnoise_utils.experiments.corner`, notebook 07) is driven by.
 """
 
 from __future__ import annotations

@@ -78,7 +78,7 @@ def plot_row_inputs(roads: dict, static: Footprint, row: int = 0, samples: int =
 def plot_kernel_filter(
     wavelengths: np.ndarray, gains: np.ndarray, labels: list[str], ax: plt.Axes | None = None
 ) -> plt.Axes:
-    """|K_i(1/λ)|: how much of a sinusoidal road of wavelength λ reaches each tassello."""
+    """The kernel gain :math:`|K_i(1/\\lambda)|`: how much of a sinusoidal road of wavelength λ reaches each tassello."""
     if ax is None:
         _, ax = plt.subplots(figsize=(8, 4))
     for g, label in zip(gains, labels):

@@ -57,7 +57,7 @@ def plot_superposition(
     ax: plt.Axes | None = None,
     paper: dict[str, float] | None = None,
 ) -> plt.Axes:
-    """Fig. 5 analogue: |H_tot| of the viscoelastic model vs |Σ H_i| of modal models (N/mm).
+    """Fig. 5 analogue: :math:`|H_{tot}|` of the viscoelastic model vs :math:`|\\sum H_i|` of modal models (N/mm).
 
     ``paper``: the paper's frequencies (label -> Hz, e.g. its ~70 Hz freezing frequency), drawn as reference lines.
     """
@@ -101,7 +101,7 @@ def plot_identification(visco: FRFResult, ident, f_max: float = 300.0) -> plt.Fi
 
 
 def plot_tassello_frf(static: Footprint, frfs: dict[str, FRFResult], tassello: int, f_max: float = 300.0) -> plt.Figure:
-    """|H_i| and phase of one tassello (number from 1) from several models, with its position."""
+    """The modulus :math:`|H_i|` and phase of one tassello (number from 1) from several models, with its position."""
     i = tassello - 1
     fig = plt.figure(figsize=(11, 4.2))
     a1 = fig.add_subplot(2, 3, (1, 2))
@@ -130,7 +130,7 @@ def plot_tassello_frf(static: Footprint, frfs: dict[str, FRFResult], tassello: i
 
 
 def plot_hub_frf(frfs: dict[str, FRFResult], f_max: float = 300.0, ax: plt.Axes | None = None) -> plt.Axes:
-    """|G_H| (hub force per unit hub displacement, footprint held) in N/mm."""
+    """The modulus :math:`|G_H|` (hub force per unit hub displacement, footprint held) in N/mm."""
     if ax is None:
         _, ax = plt.subplots(figsize=(8, 4))
     for (label, frf), style in zip(frfs.items(), ["k-", "--", ":", "-."], strict=False):

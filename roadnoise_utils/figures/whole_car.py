@@ -159,7 +159,7 @@ def plot_cavity_split(tables, measured: tuple[float, float], rated_load: float) 
 
 
 def plot_cavity_frfs(result) -> plt.Figure:
-    """|H_tot| and |G_H| of the fixed-hub tire without and with its air cavity, the loaded doublet marked."""
+    """The moduli :math:`|H_{tot}|` and :math:`|G_H|` of the fixed-hub tire without and with its air cavity, the loaded doublet marked."""
     fig, axes = plt.subplots(1, 2, figsize=(10, 3.8), sharex=True)
     f = result.plain.freqs
     for ax, name, label in zip(axes, ("H_tot", "G_H"), ("|H_tot| (N/mm)", "|G_H| (N/mm)")):
@@ -201,7 +201,7 @@ def plot_hub_and_heave(
 
 
 def plot_rolling_cavity(result) -> plt.Figure:
-    """|H_tot| and |G_H| of the fixed-hub tire with its rolling cavity at each speed, the waveguide's rolling
+    """The moduli :math:`|H_{tot}|` and :math:`|G_H|` of the fixed-hub tire with its rolling cavity at each speed, the waveguide's rolling
     doublet of each speed marked in its colour (``result``: :class:`.experiments.cavity.RollingCavityFRFs`)."""
     fig, axes = plt.subplots(1, 2, figsize=(10, 3.8), sharex=True)
     colours = plt.cm.viridis(np.linspace(0.0, 0.85, len(result.speeds_kmh)))

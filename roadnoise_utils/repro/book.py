@@ -126,6 +126,10 @@ def build(out: Path = BUILD_DIR) -> Path:
         result = subprocess.run(command, capture_output=True, text=True)
         if result.returncode != 0:
             raise BookError(f"jupyter-book build failed:\n{result.stdout[-4000:]}\n{result.stderr[-4000:]}")
+        warnings = build_warnings(result.stdout + result.stderr)
+        if warnings:
+            shown = "\n".join(line.replace(f"{source}/", "") for line in warnings[:50])
+            raise BookError(f"{len(warnings)} warnings in the build (fix the page or docstring):\n{shown}")
     site = out / "_build" / "html"
     # pages that show figures in HTML (the gallery's table) point at figures/, which Sphinx does not copy
     shutil.copytree(figure_dir(), site / "figures", dirs_exist_ok=True)
@@ -152,9 +156,13 @@ class _References(html.parser.HTMLParser):
         self.links: list[str] = []
         self.images: list[str] = []
         self.classes: list[str] = []
+        self.anchors: set[str] = set()
 
     def handle_starttag(self, tag: str, attrs: list[tuple[str, str | None]]) -> None:
         values = dict(attrs)
+        for key in ("id", "name"):
+            if values.get(key):
+                self.anchors.add(values[key])
         if tag == "a" and values.get("href"):
             self.links.append(values["href"])
         if tag == "img" and values.get("src"):
@@ -167,27 +175,47 @@ class _References(html.parser.HTMLParser):
 ERROR_CLASSES = {"traceback", "output_error"}
 
 
+def _parsed(page: Path) -> tuple[_References, str]:
+    parser = _References()
+    text = page.read_text(encoding="utf-8")
+    parser.feed(text)
+    return parser, text
+
+
 def check_site(site: Path) -> list[str]:
-    """Broken internal links, missing images and raw error outputs in the built ``site`` (one line each)."""
+    """Broken internal links (a missing page or a missing ``#anchor`` on it), missing images and raw
+    error outputs in the built ``site`` (one line each)."""
     if not (site / "index.html").is_file():
         return [f"{site}: no index.html"]
+    pages = {page.resolve(): _parsed(page) for page in sorted(site.rglob("*.html"))}
     problems = []
-    for page in sorted(site.rglob("*.html")):
-        parser = _References()
-        text = page.read_text(encoding="utf-8")
-        parser.feed(text)
-        where = page.relative_to(site)
+    for page, (parser, text) in pages.items():
+        where = page.relative_to(site.resolve())
         for kind, targets in (("link", parser.links), ("image", parser.images)):
             for target in targets:
                 url = urlparse(target)
-                if url.scheme or url.netloc or target.startswith(("#", "mailto:", "data:")):
+                if url.scheme or url.netloc or target.startswith(("mailto:", "data:")):
                     continue
-                resolved = (page.parent / unquote(url.path)).resolve()
-                if url.path and not resolved.exists():
+                resolved = (page.parent / unquote(url.path)).resolve() if url.path else page
+                if not resolved.exists():
                     problems.append(f"{where}: broken {kind} {target}")
+                elif kind == "link" and url.fragment and resolved in pages:
+                    if unquote(url.fragment) not in pages[resolved][0].anchors:
+                        problems.append(f"{where}: broken link {target} (no such anchor)")
         if ERROR_CLASSES & set(parser.classes) or "Traceback (most recent call last)" in text:
             problems.append(f"{where}: a raw error output")
     return problems
+
+
+#: Colour codes in Sphinx's console output.
+_ANSI = re.compile(r"\x1b\[[0-9;]*m")
+
+
+def build_warnings(output: str) -> list[str]:
+    """The lines of a Sphinx build's console ``output`` that report a warning or an error
+    (a docstring that does not parse, an ambiguous reference...), colour codes removed."""
+    lines = (_ANSI.sub("", line) for line in output.splitlines())
+    return [line for line in lines if "WARNING:" in line or "ERROR:" in line]
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -1,7 +1,7 @@
 """On-disk stage cache: results keyed by exactly what they depend on.
 
 Each notebook runs alone on a fresh checkout: when it needs an earlier stage it calls the
-cached stage function (:mod:`.stages`), which computes the stage or loads it from here.
+cached stage function (:mod:`~roadnoise_utils.repro.stages`), which computes the stage or loads it from here.
 
 * **The key** hashes the stage's name, its *fully resolved* arguments (the tire's every
   parameter, the road, the frequencies, the cleat...; so the contents of every data file a

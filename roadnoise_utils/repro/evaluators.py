@@ -90,7 +90,7 @@ def _quarter_car(model: str) -> dict:
 
 
 def transmissibility_bands() -> dict[str, FrequencyBand]:
-    """The paper's Fig. 10 claims as bands: ``claim id -> FrequencyBand`` (Hz, statistic of |T|, label)."""
+    """The paper's Fig. 10 claims as bands: ``claim id -> FrequencyBand`` (Hz, statistic of :math:`|T|`, label)."""
     claims = read_toml(data_dir() / "paper" / "claims.toml")["claim"]
     return {c["id"]: FrequencyBand(*c["band"], c["statistic"], c["label"]) for c in claims if "band" in c}
 

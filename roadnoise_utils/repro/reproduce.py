@@ -202,6 +202,23 @@ def _remove_stale(out: Path, age: float = 3600.0) -> None:
             shutil.rmtree(folder, ignore_errors=True)
 
 
+def portable_outputs(nb: nbformat.NotebookNode, root: Path = REPO_ROOT) -> nbformat.NotebookNode:
+    """The notebook with the repository's location taken out of its text outputs, in place.
+
+    A warning's or traceback's file name reads ``roadnoise_utils/...`` relative to the
+    repository rather than the folder of the machine that ran it, so the stored outputs (and the
+    book built from them) are the same wherever the reproduction ran.
+    """
+    prefix = f"{Path(root).resolve()}{os.sep}"
+    for cell in nb.cells:
+        for output in cell.get("outputs", []):
+            if isinstance(output.get("text"), str):
+                output["text"] = output["text"].replace(prefix, "")
+            if "traceback" in output:
+                output["traceback"] = [line.replace(prefix, "") for line in output["traceback"]]
+    return nb
+
+
 def _write_notebook(nb: nbformat.NotebookNode, path: Path) -> None:
     """Rewrite a notebook atomically (temporary file, then rename)."""
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}", suffix=".tmp")
@@ -320,7 +337,7 @@ def reproduce(
         shutil.rmtree(staging, ignore_errors=True)
         raise
     for path, nb in executed.items():
-        _write_notebook(provenance.stamp(nb), path)
+        _write_notebook(provenance.stamp(portable_outputs(nb)), path)
     return rows, table
 
 

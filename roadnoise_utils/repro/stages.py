@@ -8,19 +8,19 @@ it through the interface and never asks which model it holds. Its arguments are 
 conditions (the drum radius, the cleat) are resolved by :mod:`roadnoise_utils.experiments` and
 passed in, so the cache key (:mod:`.cache`) holds every value a result depends on.
 
-========================  ==================================================================
-stage                     asks the tire model for
-========================  ==================================================================
-:func:`solve_static`      :meth:`~.TireModel.load`: the loaded tire on a road or a drum
-:func:`frf_visco`         :meth:`~.TireModel.fixed_hub_frfs` (default 0-400 Hz)
-:func:`loaded_modes`      its loaded modes (capability ``loaded_modes``)
-:func:`modal_reduction`   the paper's modal reduction (capability ``modal_reduction``)
-:func:`fit_tasselli`      :func:`roadnoise_utils.rm.order.fit_at_order` on the direct H_i
-:func:`fit_hub`           :func:`roadnoise_utils.rm.moving_hub.fit_hub` on G_H (``hub_transfer``)
-:func:`fe_cleat_response` a cleat straight from the FE tire (capability ``direct_response``)
-:func:`one_sided_run`     a cleat with one-sided contact (capability ``one_sided_cleat``)
-:func:`texture_road`      :func:`roadnoise_utils.road.input.texture_road` (a generated road)
-========================  ==================================================================
+==========================  ==================================================================
+stage                       asks the tire model for
+==========================  ==================================================================
+:func:`solve_static`        :meth:`~.TireModel.load`: the loaded tire on a road or a drum
+:func:`frf_visco`           :meth:`~.TireModel.fixed_hub_frfs` (default 0-400 Hz)
+:func:`loaded_modes`        its loaded modes (capability ``loaded_modes``)
+:func:`modal_reduction`     the paper's modal reduction (capability ``modal_reduction``)
+:func:`fit_tasselli`        :func:`roadnoise_utils.rm.order.fit_at_order` on the direct H_i
+:func:`fit_hub`             :func:`roadnoise_utils.rm.moving_hub.fit_hub` on G_H (``hub_transfer``)
+:func:`fe_cleat_response`   a cleat straight from the FE tire (capability ``direct_response``)
+:func:`one_sided_run`       a cleat with one-sided contact (capability ``one_sided_cleat``)
+:func:`texture_road`        :func:`roadnoise_utils.road.input.texture_road` (a generated road)
+==========================  ==================================================================
 
 :func:`load_tire`, :func:`build_fet` and :func:`assemble_fixed_hub` are fast and not cached. A
 stage whose capability the tire model lacks raises

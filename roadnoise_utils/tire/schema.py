@@ -57,7 +57,7 @@ def flag(doc: str) -> Any:
 
 @dataclass(frozen=True)
 class AirCavity:
-    """The tire's air cavity (beyond the paper; :mod:`.cavity`). Optional in a tire file: absent, it is off."""
+    """The tire's air cavity (beyond the paper; :mod:`~roadnoise_utils.tire.cavity`). Optional in a tire file: absent, it is off."""
 
     enabled: bool = flag("couple the air cavity's plane-wave modes to the tire (false: the paper's model)")
     temperature: float = param("deg C", -40.0, 120.0, "temperature of the inflation air")

@@ -10,12 +10,12 @@ forces and :math:`u_V` the hub displacements,
     u_V = K x_V,\\quad \\dot x_V = f(x_V, F_V, t)  \\qquad (8)
 
 The paper runs only a quarter car. Here ``f`` is linear: each corner is the network of its
-corner file (:mod:`.quarter_car`: hub, damper rod, strut tower, springs, dampers, Maxwell
+corner file (:mod:`~roadnoise_utils.vehicle.quarter_car`: hub, damper rod, strut tower, springs, dampers, Maxwell
 dampers) whose ``body`` end is the point of the body above that corner, and the body is rigid
 (heave ``z`` up, pitch ``theta`` nose down, roll ``phi`` left side up), so a point at ``x``
 ahead of the centre of mass and ``y`` to its left moves by ``z - x theta + y phi``.
 
-As for the quarter car (:mod:`.corner`), the tires enter through linearity (Eq. 5): the
+As for the quarter car (:mod:`~roadnoise_utils.vehicle.corner`), the tires enter through linearity (Eq. 5): the
 fixed-hub road forces :math:`F_F` of each tire are simulated apart (the large, block-diagonal
 part), and the small system — the car closed through each corner's :math:`G_H` — is driven by
 them. :func:`full_car_model` is that system as one python-control object (inputs the four

@@ -39,7 +39,7 @@ def _page(site, name: str, body: str) -> None:
 def test_the_site_check_finds_broken_links_missing_images_and_raw_errors(tmp_path):
     site = tmp_path / "html"
     _page(site, "index.html", '<a href="notebooks/a.html#s1">a</a> <a href="https://example.org">x</a>')
-    _page(site, "notebooks/a.html", '<img src="../figures/f.png"> <a href="#top">top</a>')
+    _page(site, "notebooks/a.html", '<h1 id="s1">A</h1> <img src="../figures/f.png"> <a href="#s1">top</a>')
     (site / "figures").mkdir()
     (site / "figures" / "f.png").write_bytes(b"png")
     assert book.check_site(site) == []
@@ -58,3 +58,24 @@ def test_the_build_refuses_notebooks_whose_outputs_are_stale(monkeypatch, tmp_pa
     monkeypatch.setattr(book, "chapter_paths", lambda: [stale])
     with pytest.raises(book.BookError, match="stored outputs not from the present source: 03-stale.ipynb"):
         book.build(tmp_path / "out")
+
+
+def test_the_site_check_finds_a_link_to_an_anchor_its_page_lacks(tmp_path):
+    site = tmp_path / "html"
+    _page(site, "index.html", '<a href="report.html#ring-x">r</a> <a href="#here">h</a> <p id="here"></p>')
+    _page(site, "report.html", '<a id="ring-x"></a> <a href="#nowhere">n</a> <a href="index.html#here">i</a>')
+    assert book.check_site(site) == ["report.html: broken link #nowhere (no such anchor)"]
+
+
+def test_sphinx_warnings_and_docstring_errors_are_found_in_the_build_output():
+    output = (
+        "reading sources... [ 50%] api\n"
+        "\x1b[91m/x/stages.py:docstring of m:20: ERROR: Malformed table.\x1b[39;49;00m\n"
+        "\x1b[91mapi.md:3: WARNING: more than one target found for cross-reference 'cavity'\x1b[39;49;00m\n"
+        "build succeeded, 2 warnings.\n"
+    )
+    assert book.build_warnings(output) == [
+        "/x/stages.py:docstring of m:20: ERROR: Malformed table.",
+        "api.md:3: WARNING: more than one target found for cross-reference 'cavity'",
+    ]
+    assert book.build_warnings("build succeeded.\n") == []

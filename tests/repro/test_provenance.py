@@ -2,10 +2,16 @@
 
 from __future__ import annotations
 
+import re
+
 import nbformat
 
-from roadnoise_utils.repro import provenance
+from roadnoise_utils.repro import provenance, reproduce
 from roadnoise_utils.repro.book import chapter_paths
+from roadnoise_utils.repro.paths import REPO_ROOT
+
+#: An absolute path to a file of the package (any machine's).
+ABSOLUTE = re.compile(r"(^|[\s'\"(])/\S*/roadnoise_utils/", re.MULTILINE)
 
 
 def _notebook(*sources: str) -> nbformat.NotebookNode:
@@ -38,3 +44,24 @@ def test_the_digest_sees_the_code_and_its_order_not_the_prose():
 def test_every_chapter_s_stored_outputs_are_from_its_present_source():
     """The book shows the stored outputs: a chapter edited without a reproduction since fails here first."""
     assert provenance.stale_notebooks(chapter_paths()) == [], "run python -m roadnoise_utils, then commit"
+
+
+def test_stored_outputs_name_files_relative_to_the_repository(tmp_path):
+    root = tmp_path / "clone"
+    warning = f"{root}/roadnoise_utils/rm/order.py:86: RoadnoiseWarning: no order fits\n"
+    nb = _notebook("fit()")
+    nb.cells[0].outputs = [
+        nbformat.v4.new_output("stream", name="stderr", text=warning),
+        nbformat.v4.new_output("error", ename="E", evalue="v", traceback=[f"File {root}/roadnoise_utils/x.py:3"]),
+    ]
+    reproduce.portable_outputs(nb, root)
+    assert nb.cells[0].outputs[0].text == "roadnoise_utils/rm/order.py:86: RoadnoiseWarning: no order fits\n"
+    assert nb.cells[0].outputs[1].traceback == ["File roadnoise_utils/x.py:3"]
+
+
+def test_no_chapter_stores_the_location_of_the_machine_that_ran_it():
+    for path in chapter_paths():
+        for cell in nbformat.read(path, as_version=4).cells:
+            for output in cell.get("outputs", []):
+                text = output.get("text", "") + "".join(output.get("traceback", []))
+                assert str(REPO_ROOT) not in text and not ABSOLUTE.search(text), path.name

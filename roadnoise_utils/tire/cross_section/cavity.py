@@ -3,7 +3,7 @@
 The cavity is the torus between the tire's inner surface (the mesh's inner face, bead to bead)
 and the rim, here closed by the flanges' inner faces down to the bead seat and the rim's base
 at the bead-seat radius (the drop centre left out). Below its first cross-sectional mode it is
-the plane-wave waveguide of :mod:`.cavity`: Webster's equation along the centroid's circle,
+the plane-wave waveguide of :mod:`~roadnoise_utils.tire.cavity`: Webster's equation along the centroid's circle,
 :math:`s = R_c\\theta`, with the area
 
 .. math:: A(\\theta) = \\frac{V'(\\theta)}{R_c}, \\qquad V' = \\int r\\,dA, \\quad R_c = \\frac{V'_0}{A_0},

@@ -1,6 +1,6 @@
 """Elastic constants of the cross-section tire's layers: rubber, cord-rubber plies, rotations.
 
-Each layer of the cross-section model (:mod:`.cross_section`) is a linear elastic solid whose
+Each layer of the cross-section model (:mod:`~roadnoise_utils.tire.cross_section`) is a linear elastic solid whose
 6x6 stiffness ``C`` (engineering Voigt notation) is scaled by its compound law
 :math:`g_c(\\omega)` (:mod:`.rubber`). Rubber is isotropic. A cord-rubber ply is transversely
 isotropic about its cords, its constants from the cord and matrix moduli by the rule of

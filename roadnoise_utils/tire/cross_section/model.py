@@ -1,6 +1,6 @@
 """The cross-section tire as a :class:`~roadnoise_utils.tire.model.TireModel`.
 
-Its stages are cached by :mod:`.stages` (the harmonic reductions shared by the flat road's and
+Its stages are cached by :mod:`~roadnoise_utils.tire.cross_section.stages` (the harmonic reductions shared by the flat road's and
 the drum's footprints, the time-stepped harmonics of contact loss); this class answers the
 pipeline's calls with them.
 """

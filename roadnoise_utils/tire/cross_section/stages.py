@@ -1,26 +1,26 @@
 """Cached stages of the cross-section tire (``[tire] model = "cross-section"``).
 
-=============================  ==========================================================================
-stage                          caches
-=============================  ==========================================================================
-:func:`roadnoise_utils.tire.cross_section.static`         :func:`roadnoise_utils.tire.cross_section.static.solve_section_static`
-:func:`footprint_reductions`   :func:`roadnoise_utils.tire.cross_section.reductions.footprint_reductions`
-                               (the harmonics reduced for a band: shared by the loaded states)
-:func:`roadnoise_utils.tire.cross_section.footprint`      :func:`roadnoise_utils.tire.cross_section.footprint.footprint_frf`
-                               (default 0-400 Hz every 1 Hz)
-:func:`roadnoise_utils.tire.cross_section.modal`          :func:`roadnoise_utils.tire.cross_section.modal.section_modal_reduction`
-                               on the default sweep
-:func:`frozen_check`           :func:`roadnoise_utils.tire.cross_section.modal.frozen_check`
-:func:`quasi_static_cleat`     :func:`roadnoise_utils.tire.cross_section.one_sided.section_quasi_static_run`
-                               of a cleat on the drum
-:func:`harmonic_reductions`    :func:`roadnoise_utils.tire.cross_section.stepping.reduce_all` (every harmonic)
-:func:`dynamic_cleat_runs`     :func:`roadnoise_utils.tire.cross_section.one_sided.section_dynamic_runs`
-                               of a cleat on the drum: the one-sided run and its frozen twin,
-                               stepped together (:func:`dynamic_cleat` picks one)
-:func:`cavity_areas`           :func:`roadnoise_utils.tire.cross_section.cavity.loaded_areas` on the flat
-                               road at several loads (one compliance and one factorisation per
-                               harmonic for all)
-=============================  ==========================================================================
+============================  ================================================================================
+stage                         caches
+============================  ================================================================================
+:func:`section_static`        :func:`~roadnoise_utils.tire.cross_section.static.solve_section_static`
+:func:`footprint_reductions`  :func:`~roadnoise_utils.tire.cross_section.reductions.footprint_reductions`
+                              (the harmonics reduced for a band: shared by the loaded states)
+:func:`section_footprint`     :func:`~roadnoise_utils.tire.cross_section.footprint.footprint_frf`
+                              (default 0-400 Hz every 1 Hz)
+:func:`section_modal`         :func:`~roadnoise_utils.tire.cross_section.modal.section_modal_reduction`
+                              on the default sweep
+:func:`frozen_check`          :func:`~roadnoise_utils.tire.cross_section.modal.frozen_check`
+:func:`quasi_static_cleat`    :func:`~roadnoise_utils.tire.cross_section.one_sided.section_quasi_static_run`
+                              of a cleat on the drum
+:func:`harmonic_reductions`   :func:`~roadnoise_utils.tire.cross_section.stepping.reduce_all` (every harmonic)
+:func:`dynamic_cleat_runs`    :func:`~roadnoise_utils.tire.cross_section.one_sided.section_dynamic_runs`
+                              of a cleat on the drum: the one-sided run and its frozen twin,
+                              stepped together (:func:`dynamic_cleat` picks one)
+:func:`cavity_areas`          :func:`~roadnoise_utils.tire.cross_section.cavity.loaded_areas` on the flat
+                              road at several loads (one compliance and one factorisation per
+                              harmonic for all)
+============================  ================================================================================
 
 :func:`section_tire` (mesh, harmonic matrices and inflation: about half a second) is not cached.
 """

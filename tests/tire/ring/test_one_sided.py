@@ -119,3 +119,32 @@ def test_a_run_starting_on_the_cleat_and_a_bad_margin_are_refused(drum_tire):
         one_sided.dynamic_run(fet, static, CLEAT, 30 / 3.6, (-0.05, 0.0))
     with pytest.raises(ValueError, match="margin = nan"):
         one_sided.dynamic_run(fet, static, CLEAT, 30 / 3.6, (-0.15, 0.0), margin=float("nan"))
+
+
+def test_the_convergence_study_runs_each_mesh_step_and_speed_it_reports(monkeypatch):
+    """Each number of :func:`convergence` comes from the run it names: a stand-in stage whose peak
+    encodes its arguments (mesh, speed, step, travel) shows which run each entry read."""
+    from roadnoise_utils.experiments import one_sided_cleat
+
+    class Run:
+        def __init__(self, n, speed, distance, dt):
+            self.dt = 1e-4 if dt is None else dt
+            self.peak_force = n + 1e3 * speed + 1e6 * self.dt + 10 * distance[1]
+
+    def stage(tire, speed, height, base, shape, drum, distance, dt=None, **_):
+        return Run(tire.mesh.n_elements, speed, distance, dt)
+
+    class Test:
+        dynamic = Run(999, 0.0, (0.0, 0.0), 1.0)
+
+    conditions = one_sided_cleat.one_sided_conditions(n_elements=400)
+    monkeypatch.setattr(one_sided_cleat.stages, "one_sided_run", stage)
+    monkeypatch.setattr(one_sided_cleat, "one_sided_cleat_test", lambda tire, conditions: Test)
+    study = one_sided_cleat.convergence(TIRE, conditions=conditions, slow_runs=((0.1, 5e-3),))
+    coarse = ru.load_tire(TIRE).mesh.n_elements
+    c, d, sweep = conditions.cleat, conditions.distance[1], conditions.sweep_distance[1]
+    assert study.quasi_static_peaks == {coarse: coarse + 100 + 10 * d, 400: 400 + 100 + 10 * d}
+    assert study.dynamic_peaks == {coarse: coarse + 1e3 * c.dynamic_speed + 100 + 10 * d, 400: Test.dynamic.peak_force}
+    assert list(study.step_peaks) == [1e-4, 5e-5]
+    assert study.slow_peaks == {0.1: coarse + 100 + 5e3 + 10 * sweep}
+    assert study.slow_quasi_static == coarse + 100 + 10 * sweep
