@@ -236,10 +236,11 @@ if ring_tire:
 # %%
 # Fig. 2 analogue: contact pressure, tassello outlines, centres (white dots) and numbers
 fig, axes = plt.subplots(1, 2, figsize=(12, 5))
-ru.figures.fe_tire_model.plot_footprint(flat, axes[0])
+vmax = max(flat.node_pressure.max(), drum.node_pressure.max()) / 1e6  # one colour scale (MPa) for both
+ru.figures.fe_tire_model.plot_footprint(flat, axes[0], vmax=vmax)
 n_paper = ru.claims.paper_value("n_tasselli")  # data/paper/claims.toml
 axes[0].set_title(f"flat road: {flat.tasselli.n} tasselli (paper: {n_paper:.0f})")
-ru.figures.fe_tire_model.plot_footprint(drum, axes[1])
+ru.figures.fe_tire_model.plot_footprint(drum, axes[1], vmax=vmax)
 axes[1].set_title(f"drum R = {drum_radius:.2f} m: {drum.tasselli.n} tasselli")
 fig.suptitle("Fig. 2 analogue: subdivision of the footprint into tasselli")
 plt.show()

@@ -201,6 +201,7 @@ ax.plot(f, np.abs(visco.H_sum[band]) / 1e3, color="tab:orange", lw=1.5, label="Î
 ax.plot(f, np.abs(fitted_sum) / 1e3, "--", color="tab:red", label=f"Î£ G_i (fitted, {fits.n_poles} poles each)")
 ax.set_xlabel("Frequency (Hz)")
 ax.set_ylabel("|H| (N/mm)")
+ax.set_title("The fitted tasselli's sum against the FE model's, 0-250 Hz")
 ax.legend()
 plt.show()
 

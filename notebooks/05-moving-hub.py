@@ -137,7 +137,7 @@ if fe_check:
     ru.figures.moving_hub.plot_frf_pair(
         freqs,
         {"FE, hub free (direct)": omega2 * u_fe, "RM model (Eq. 5-7)": omega2 * u_rm},
-        "|hub acceleration / road displacement| (1/s^2)",
+        "|hub acceleration / road displacement| (s⁻²)",
         ax=axes[0],
     )
     ru.figures.moving_hub.plot_frf_pair(
@@ -215,7 +215,7 @@ def show_moving_hub(hub_mass_kg, stiffness_N_per_mm):
     run = ru.experiments.moving_hub_check(tire, f, changed)
     w2 = (2 * np.pi * f) ** 2
     curves = {"FE, hub free": w2 * run.fe_hub, "RM model": w2 * run.rm_hub}
-    ru.figures.moving_hub.plot_frf_pair(f, curves, "|hub acceleration / road| (1/s^2)")
+    ru.figures.moving_hub.plot_frf_pair(f, curves, "|hub acceleration / road| (s⁻²)")
     plt.show()
 
 

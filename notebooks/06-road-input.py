@@ -116,6 +116,7 @@ for name, p in profiles.items():
     ax.plot(p.s[keep], p.z[0, keep] * 1e3, lw=0.9, label=name)
 ax.set_xlabel("road coordinate s (m)")
 ax.set_ylabel("height (mm)")
+ax.set_title("The first 4 m of each generated profile (one track)")
 ax.legend()
 plt.show()
 
@@ -128,7 +129,7 @@ plt.show()
 # waves are common to all tracks, waves shorter than the track spacing are independent.
 
 # %%
-# Coherence between tracks 14 mm and 126 mm apart
+# Coherence between the closest and the farthest tracks of the footprint
 tire = ru.load_tire(tire_name)
 static = ru.stages.solve_static(tire)
 strip_y = ru.road.contact_tracks(static)
@@ -137,6 +138,7 @@ for b in (strip_y[1] - strip_y[0], strip_y[-1] - strip_y[0]):
     ax.semilogx(n, ru.textures.coherence(spectra["rough"], n, b), label=f"tracks {b * 1e3:.0f} mm apart")
 ax.set_xlabel("wavenumber n (cycles/m)")
 ax.set_ylabel("coherence γ")
+ax.set_title("Coherence between the closest and the farthest tracks (rough road)")
 ax.legend()
 plt.show()
 

@@ -145,8 +145,9 @@ print("road to time histories: " + ", ".join(f"{k} {v:.2f} s" for k, v in drive.
 # %%
 # Fig. 11 analogue: hub acceleration spectra, rough vs smooth
 ax = ru.figures.quarter_car.plot_spectra(
-    f_psd, {name: s["a_hub"][1] for name, s in spectra.items()}, "hub acceleration ASD ((m/s²)/√Hz)", (0.0, band)
-)
+    f_psd, {name: s["a_hub"][1] for name, s in spectra.items()}, "hub acceleration ASD ((m/s²)/√Hz)", (0.0, band),
+    split=50.0, band=(2.0, band),
+)  # fmt: skip
 ax.set_title(f"Fig. 11 analogue: spectrum of hub accelerations on two road textures ({speed_kmh:.0f} km/h)")
 plt.show()
 
@@ -157,6 +158,8 @@ ax = ru.figures.quarter_car.plot_spectra(
     {name: s["a_mount"][1] for name, s in spectra.items()},
     "upper-mount acceleration ASD ((m/s²)/√Hz)",
     (0.0, band),
+    split=50.0,
+    band=(2.0, band),
 )
 ax.set_title(f"Fig. 12 analogue: spectrum of the suspension upper-mount accelerations ({speed_kmh:.0f} km/h)")
 plt.show()

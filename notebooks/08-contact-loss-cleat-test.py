@@ -138,7 +138,9 @@ print(sweep.to_string(float_format=lambda v: f"{v:.0f}"))
 # %%
 # The speed sweep with the measured peaks
 ax = ru.figures.contact_loss.plot_speed_sweep(sweep, paper=measured)
-ax.set_title(f"{tire_name}: the peak hub force against speed, one-sided contact and the linear chain")
+ax.set_title(
+    f"{ru.load_tire(tire_name).name}: the peak hub force against speed, one-sided contact and the linear chain"
+)
 plt.show()
 
 # %% [markdown]
@@ -197,7 +199,9 @@ print(f"{cleat.dynamic_kmh:.0f} km/h peak: {coarse_peak:.0f} N at {coarse_n} ele
 # NBVAL_CHECK_OUTPUT
 # Time-step convergence of the dynamic peak on the tire file's mesh
 (dt, peak), (half_dt, half_peak) = study.step_peaks.items()
-print(f"dt = {dt * 1e6:.0f} us: {peak:.1f} N; dt = {half_dt * 1e6:.0f} us: {half_peak:.1f} N ({half_peak / peak - 1:+.2%})")
+print(
+    f"dt = {dt * 1e6:.0f} us: {peak:.1f} N; dt = {half_dt * 1e6:.0f} us: {half_peak:.1f} N ({half_peak / peak - 1:+.2%})"
+)
 
 # %% [markdown]
 # **Vanishing speed.** As the speed goes to zero the dynamic run must tend to the quasi-static
@@ -281,7 +285,7 @@ print(
 # The cleat test with contact loss on both tire models, with the measured peaks
 ru.figures.contact_loss.plot_contact_runs(
     {
-        f"ring tire ({tire_name}), quasi-static": test.quasi_static,
+        f"ring tire ({ru.load_tire(tire_name).name}), quasi-static": test.quasi_static,
         f"ring tire, {cleat.dynamic_kmh:.0f} km/h": test.dynamic,
         "cross-section tire, quasi-static": section.quasi_static,
         f"cross-section tire, {cleat.dynamic_kmh:.0f} km/h (0-250 Hz)": section.dynamic,

@@ -217,9 +217,11 @@ ring_frf = ru.stages.frf_visco(ring_name, "flat")
 # %%
 # Fig. 5 analogue: |H_tot| of the two tire models, with the paper's first vertical resonance
 f_paper = ru.claims.paper_value("first_vertical_resonance")  # data/paper/claims.toml
+first_peak = ru.analysis.resonance_peaks(footprint.freqs, footprint.H_tot)[0][:1]
 ax = ru.figures.fe_tire_model.plot_htot(
-    footprint, f_max=400.0, label="H_tot, cross-section model", paper={"paper: first vertical resonance": f_paper}
-)
+    footprint, first_peak, f_max=400.0, label="H_tot, cross-section model",
+    paper={"paper: first vertical resonance": f_paper},
+)  # fmt: skip
 ax.plot(ring_frf.freqs, np.abs(ring_frf.H_tot) / 1e3, "--", label="H_tot, ring model")
 ax.set_title(f"Fig. 5 analogue: the whole-footprint FRF of the two tire models of the {spec.name}")
 ax.legend()

@@ -122,13 +122,14 @@ f_frozen = ru.claims.paper_value("freezing_frequency")  # data/paper/claims.toml
 
 # %%
 # Fig. 5 analogue on every model: |H_tot| (direct) vs |sum_i H_i| of the modal models (or of the files)
-fig, axes = plt.subplots(1, 3, figsize=(17, 4.5))
+fig, axes = plt.subplots(1, 3, figsize=(17, 4.5), sharey=True)
 for ax, (label, frf) in zip(axes, visco.items()):
     sums = {k: v.frf for k, v in variants[label].items()} if label in variants else {"sum of the files' H_i": frf}
     ours = {"ours: freezing frequency": variants[label][default].reference_frequency} if label in variants else {}
     lines = {"paper: freezing frequency": f_frozen, **ours}
     ru.figures.superposition.plot_superposition(frf, sums, f_max=300, ax=ax, paper=lines)
-    ax.set_title(f"{label} ({tires[label] if isinstance(tires[label], str) else 'tire.toml'})")
+    ax.set_title(f"{label}: {ru.load_tire(tires[label]).name}")
+fig.suptitle("Fig. 5 analogue on every model: H_tot (direct) against the sum of the H_i")
 plt.show()
 
 # %%
@@ -187,6 +188,7 @@ for ax, (label, run) in zip(axes, tests.items()):
         {f"base curve ({conditions.quasi_static_kmh} km/h)": run.quasi_static, f"{conditions.dynamic_kmh:.0f} km/h": run.dynamic},
         ax=ax, title=f"{label}: {run.system.nstates} states, {run.static.tasselli.n} tasselli", paper=paper,
     )  # fmt: skip
+fig.suptitle("Fig. 9 analogue on every model: the cleat test with the paper's peaks")
 plt.show()
 
 # %%
@@ -213,6 +215,7 @@ for ax, (label, tire) in zip(axes, tires.items()):
     rows[label], k_v = tire_models.drum_rows(tire, conditions.drum_radius)
     ru.figures.cleat_test.plot_row_influence(rows[label], tests[label].static, conditions.base, ax=ax)
     ax.set_title(f"{label}: K_v = {k_v / 1e3:.0f} N/mm on the drum")
+fig.suptitle("Static influence H(0) of each row along the drum footprint, every model")
 plt.show()
 
 # %%
@@ -262,18 +265,22 @@ modes = {label: ru.response.modal_reduction.identify_modes(f.freqs, f.H_tot) for
 # %%
 # Fig. 14 analogue on every model: hub acceleration 40-220 Hz (frequency domain, 2-D rough road)
 in_band = (f_check >= 40) & (f_check <= 220)
+hub_peaks = {
+    label: ru.analysis.resonance_peaks(f_check[in_band], np.sqrt(psd[in_band]), min_ratio=0.0)[0]
+    for label, psd in by_model.items()
+}
 ax = ru.figures.quarter_car.plot_spectra(
     f_check[in_band], {k: v[in_band] for k, v in by_model.items()}, "hub acceleration ASD ((m/s²)/√Hz)",
     (40.0, 220.0), log=True, styles=("-", "-", "--"),  # the files' curve dashed: it lies on the cross-section's
+    peaks=hub_peaks,
 )  # fmt: skip
-ax.set_title(f"Fig. 14 analogue, every model: {road_test.speed_kmh:.0f} km/h, {shown} texture")
+ax.set_title(f"Fig. 14 analogue, every model: {road_test.speed_kmh:.0f} km/h, {shown} texture, peaks marked")
 plt.show()
 
 # %%
 # NBVAL_CHECK_OUTPUT
 # Peaks of the hub acceleration 40-220 Hz on each model, and the tire's identified vertical modes
-for label, psd in by_model.items():
-    found, _ = ru.analysis.resonance_peaks(f_check[in_band], np.sqrt(psd[in_band]), min_ratio=0.0)
+for label, found in hub_peaks.items():
     print(f"{label:13s}: hub peaks at " + ", ".join(f"{fp:.0f}" for fp in found) + " Hz; vertical modes in H_tot "
           + ", ".join(f"{fm:.0f}" for fm in modes[label].freqs) + " Hz")  # fmt: skip
 

@@ -52,6 +52,7 @@ def plot_tassello_inputs(road, static: Footprint, rows: list[int], ax: plt.Axes 
     ax.set_xlabel("distance travelled (m)")
     ax.set_ylabel("tassello displacement (mm)")
     ax.legend(fontsize=7)
+    ax.set_title("Tassello displacements: the road flowing through the footprint")
     return ax
 
 

@@ -54,12 +54,21 @@ def paper_lines(
     scale : float
         Factor from SI to the axis' unit (e.g. 1e-3 for N/m -> N/mm).
     unit : str
-        The axis' unit; the label then ends with the value, e.g. "(850 N)".
+        The axis' unit; the label then ends with the value, e.g. "= 850 N".
+
+    Horizontal lines get headroom above the highest of them and the data, where the legend
+    goes: a line across the whole axes never runs through its text.
     """
     colours = ["tab:purple", "tab:brown", "tab:olive", "tab:cyan"]
     for (label, value), colour in zip(values.items(), colours):
         line = ax.axhline if axis == "y" else ax.axvline
-        shown = f"{label} ({value * scale:.4g} {unit})" if unit else label
+        shown = f"{label} = {value * scale:.4g} {unit}" if unit else label
         line(value * scale, color=colour, ls=(0, (6, 3)), lw=1.1, label=shown)
-    ax.legend(fontsize=8)
+    if axis == "y":
+        bottom, top = ax.dataLim.y0, ax.dataLim.y1  # the curves and the lines (not the limits: panels may share them)
+        entries = len(ax.get_legend_handles_labels()[0])
+        ax.set_ylim(bottom - 0.05 * (top - bottom), top + (0.1 + 0.05 * entries) * (top - bottom))
+        ax.legend(fontsize=8, loc="upper right")
+    else:
+        ax.legend(fontsize=8)
     return ax

@@ -23,7 +23,8 @@ def plot_contact_runs(
     raw: dict[str, ContactRun] | None = None,
     x_range: tuple[float, float] | None = None,
 ) -> plt.Axes:
-    """Fig. 8 analogue: hub force vs distance, one-sided contact (solid) and the linear chain (dashed).
+    """Fig. 8 analogue: hub force vs distance, one-sided contact (solid, its peak marked) and the
+    linear chain (dashed).
 
     ``paper``: the measured values (label -> N), drawn as reference lines; ``raw``: runs as stepped
     (before the band limit), thin and grey behind the others; ``x_range``: the distance shown (m).
@@ -35,6 +36,8 @@ def plot_contact_runs(
     colours = ["tab:blue", "tab:red", "tab:green", "tab:orange"]
     for (label, run), colour in zip(contact.items(), colours):
         ax.plot(run.distance, run.hub_force, "-", color=colour, lw=1.6, label=label)
+        peak = int(run.hub_force.argmax())
+        ax.plot(run.distance[peak], run.hub_force[peak], "o", ms=5, color=colour)
     for (label, run), colour in zip(linear.items(), colours):
         r = run.result
         ax.plot(r.distance, r.force, "--", color=colour, lw=1.0, alpha=0.8, label=label)
@@ -60,6 +63,7 @@ def plot_contact_points(runs: dict[str, ContactRun], static_points: int, ax: plt
     ax.set_xlabel("distance travelled (m)")
     ax.set_ylabel("tread points in contact")
     ax.legend(fontsize=8)
+    ax.set_title("Tread points in contact with the drum while the cleat passes")
     return ax
 
 

@@ -8,6 +8,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
 from matplotlib.collections import PolyCollection
+from matplotlib.ticker import MaxNLocator
 
 from .common import MM
 
@@ -110,6 +111,7 @@ def plot_three_d(tire: SectionTire, state: SectionStaticState | None = None, dis
     if state is not None:
         ax.plot([-150, 150], [0, 0], [-(tire.spec.geometry.outer_radius - state.deflection) * MM] * 2, "r-", lw=1)
     ax.set_box_aspect((1, 0.4, 1))
+    ax.yaxis.set_major_locator(MaxNLocator(3))  # the short axis: three ticks that do not overlap
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("y (mm)")
     ax.set_zlabel("z (mm)")

@@ -20,7 +20,7 @@ LABELS = {
     "cleat_dynamic_peak (N)": ("cleat peak at 30 km/h, linear chain (N)", 1.0),
     "one_sided_quasi_static_peak (N)": ("cleat peak, quasi-static, one-sided contact (N)", 1.0),
     "one_sided_dynamic_peak (N)": ("cleat peak at 30 km/h, one-sided contact (N)", 1.0),
-    "a_hub_rms (m/s^2)": ("hub acceleration RMS, 40-220 Hz (m/s^2)", 1.0),
+    "a_hub_rms (m/s^2)": ("hub acceleration RMS, 40-220 Hz (m/s²)", 1.0),
     "operating.inflation_pressure (Pa)": ("inflation pressure (bar)", 1e-5),
     "operating.vertical_load (N)": ("vertical load (N)", 1.0),
     "tread.normal_stiffness_per_area (N/m^3)": ("tread normal stiffness (N/mm^3)", 1e-9),
@@ -70,8 +70,9 @@ def plot_trade_off(
     if target is not None:
         ax.axvspan(target[0] * xs, target[1] * xs, color="tab:green", alpha=0.12, label=target_label)
     points = ax.scatter(table[x] * xs, table[y] * ys, c=table[colour] * cs, cmap="viridis", s=60, zorder=3)
-    for index, row in table.iterrows():
-        ax.annotate(str(index), (row[x] * xs, row[y] * ys), xytext=(5, 4), textcoords="offset points", fontsize=8)
+    for k, (index, row) in enumerate(table.iterrows()):  # labels above and below in turn: neighbours do not overlap
+        offset = (5, 4) if k % 2 == 0 else (5, -11)
+        ax.annotate(str(index), (row[x] * xs, row[y] * ys), xytext=offset, textcoords="offset points", fontsize=8)
     if baseline is not None:
         ax.scatter(
             baseline[x] * xs, baseline[y] * ys, marker="o", s=220, facecolors="none", edgecolors="k", lw=1.5,

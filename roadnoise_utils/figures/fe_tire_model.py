@@ -8,6 +8,7 @@ import pandas as pd
 from matplotlib import patheffects
 from matplotlib.collections import LineCollection
 from matplotlib.patches import Circle, Rectangle
+from matplotlib.ticker import MaxNLocator
 
 from ..tire.model import Footprint, FRFResult
 from ..tire.ring.mechanics import UX, UZ, FETModel
@@ -52,13 +53,14 @@ def plot_fet_mesh(fet: FETModel, spoke_every: int = 6, paper_dof: float | None =
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("z (mm)")
     ax.set_title("side view (centre strip)")
-    ax.legend(loc="upper right", fontsize=7)
+    ax.legend(loc="upper left", bbox_to_anchor=(0.0, -0.14), fontsize=7, ncol=2)
     ax3 = fig.add_subplot(1, 2, 2, projection="3d")
     for j in range(mesh.n_strips):
         ax3.plot(x[j] * MM, np.full(mesh.n_elements, mesh.y[j]) * MM, z[j] * MM, lw=0.6, color="k")
     for i in range(0, mesh.n_elements, 4):
         ax3.plot(x[:, i] * MM, mesh.y * MM, z[:, i] * MM, lw=0.4, color="0.5")
     ax3.set_box_aspect((1, 0.45, 1))
+    ax3.yaxis.set_major_locator(MaxNLocator(3))
     ax3.set_xlabel("x (mm)")
     ax3.set_ylabel("y (mm)")
     ax3.set_zlabel("z (mm)")
@@ -202,6 +204,7 @@ def plot_mode_chart(modes: LoadedModes, f_max: float = 300.0, ax: plt.Axes | Non
     ax.set_xlabel("circumferential wave number n (offset by lateral order m)")
     ax.set_ylabel("frequency (Hz)")
     ax.legend(title="symmetry class")
+    ax.set_title("Modes of the loaded tire by wave number and symmetry class")
     return ax
 
 
@@ -214,6 +217,7 @@ def plot_ring_check(table: pd.DataFrame, ax: plt.Axes | None = None) -> plt.Axes
     ax.set_xlabel("circumferential wave number n")
     ax.set_ylabel("natural frequency (Hz)")
     ax.legend()
+    ax.set_title("Ring frequencies: closed form against the FE model")
     return ax
 
 
@@ -227,15 +231,18 @@ def plot_htot(
 ) -> plt.Axes:
     """Modulus of the whole-footprint-to-hub FRF in N/mm (paper Fig. 5 axes).
 
-    ``paper``: the paper's frequencies (label -> Hz), drawn as reference lines.
+    ``peaks`` (Hz): marked on the curve and listed in the legend; ``paper``: the paper's
+    frequencies (label -> Hz), drawn as reference lines.
     """
     if ax is None:
         _, ax = plt.subplots()
     keep = frf.freqs <= f_max
     ax.plot(frf.freqs[keep], np.abs(frf.H_tot[keep]) / 1e3, label=label)
     if peaks is not None:
-        for f in peaks[peaks <= f_max]:
-            ax.axvline(f, color="0.6", lw=0.7, ls=":")
+        shown = peaks[peaks <= f_max]
+        modulus = np.interp(shown, frf.freqs, np.abs(frf.H_tot)) / 1e3
+        listed = ", ".join(f"{f:.1f}" for f in shown)
+        ax.plot(shown, modulus, "v", color="tab:red", ms=6, label=f"ours: peaks at {listed} Hz")
     ax.set_xlim(0, f_max)
     ax.set_xlabel("Frequency (Hz)")
     ax.set_ylabel("|H| (N/mm)")
@@ -252,11 +259,11 @@ def plot_compounds(laws: dict, f_max: float = 400.0) -> plt.Figure:
     for name, law in laws.items():
         a1.plot(f, law.storage(2 * np.pi * f), label=name)
         a2.plot(f, law.loss_factor(2 * np.pi * f), label=name)
-    a1.set_ylabel("E'(f) / E_0")
+    a1.set_ylabel("$E'(f) / E_0$")
     a2.set_ylabel("loss factor tan δ")
     for a in (a1, a2):
         a.set_xlabel("Frequency (Hz)")
-        a.legend()
+    a1.legend()  # the same colours on both panels
     fig.suptitle("Fractional-Zener rubber compounds")
     return fig
 
@@ -279,4 +286,5 @@ def plot_load_deflection(
     ax.set_xlabel("deflection (mm)")
     ax.set_ylabel("vertical load (N)")
     ax.legend()
+    ax.set_title("Load against deflection on the flat road, tangent at the nominal load")
     return ax

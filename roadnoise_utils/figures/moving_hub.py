@@ -28,7 +28,7 @@ def plot_moving_hub_scheme() -> plt.Figure:
             ax.text(0.12, 0.55, "u_H", color="tab:red")
         else:
             ax.plot([-0.2, 0.2], [0.1, 0.1], "k", lw=4)
-            ax.text(0.1, 0.25, "fixed", fontsize=8)
+            ax.text(0.42, 0.1, "fixed", va="center", fontsize=8)  # beside the hub, inside the tire
         if road_moves:
             for x in (-0.4, 0.0, 0.4):
                 ax.annotate("", (x, -0.65), (x, -1.25), arrowprops={"arrowstyle": "->", "color": "tab:blue"})

@@ -6,6 +6,8 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.patches import Rectangle
 
+from ..vehicle.spectra import power_share
+
 
 def plot_quarter_car_scheme(vehicle) -> plt.Figure:
     """Fig. 13 analogue: the corner's masses and elements, with the RM tire under the hub."""
@@ -13,26 +15,26 @@ def plot_quarter_car_scheme(vehicle) -> plt.Figure:
     names = [n for n in names if n in vehicle.masses] + [n for n in vehicle.masses if n not in names]
     y = {name: 4.0 - 1.2 * k for k, name in enumerate(names)}
     x = {name: (0.6 if name == "rod" else 0.0) for name in names}
-    fig, ax = plt.subplots(figsize=(6.5, 6))
+    fig, ax = plt.subplots(figsize=(8, 6.5))
     for name in names:
         ax.add_patch(Rectangle((x[name] - 0.45, y[name] - 0.25), 0.9, 0.5, fc="tab:blue", alpha=0.2, ec="tab:blue"))
         ax.text(x[name], y[name], f"{name}\n{vehicle.masses[name]:g} kg", ha="center", va="center", fontsize=8)
-    ground_y = y[vehicle.hub] - 2.2
-    ax.add_patch(Rectangle((-0.6, y[vehicle.hub] - 1.55), 1.2, 0.7, fc="0.3", alpha=0.25, ec="k"))
-    ax.text(0, y[vehicle.hub] - 1.2, "RM tire: F_M = F_F + G_H u_H\n(Eq. 5-7)", ha="center", va="center", fontsize=8)
+    ground_y = y[vehicle.hub] - 2.3
+    ax.add_patch(Rectangle((-0.8, y[vehicle.hub] - 1.65), 1.6, 0.9, fc="0.3", alpha=0.25, ec="k"))
+    ax.text(0, y[vehicle.hub] - 1.2, "RM tire\nF_M = F_F + G_H u_H\n(Eq. 5-7)", ha="center", va="center", fontsize=8)
     ax.plot([-1.2, 1.2], [ground_y, ground_y], color="tab:brown", lw=3)
     ax.text(0, ground_y - 0.25, "road irregularities → tasselli", ha="center", fontsize=8, color="tab:brown")
-    ax.annotate("", (0, ground_y + 0.05), (0, y[vehicle.hub] - 1.55), arrowprops={"arrowstyle": "-", "ls": ":"})
+    ax.annotate("", (0, ground_y + 0.05), (0, y[vehicle.hub] - 1.65), arrowprops={"arrowstyle": "-", "ls": ":"})
+    spacing, legend = 0.62, []
     for k, e in enumerate(vehicle.elements):
-        ya, yb = y.get(e.a, ground_y), y.get(e.b, ground_y)
-        xm = -0.65 - 0.42 * (len(vehicle.elements) - 1 - k)
-        ax.plot(
-            [xm, xm],
-            [min(ya, yb) + 0.25, max(ya, yb) - 0.25],
-            color="k",
-            lw=1.0,
-            ls={"spring": "-", "damper": "--", "maxwell": "-."}[e.kind],
-        )
+        ends = [(y.get(end, ground_y), x.get(end, 0.0)) for end in (e.a, e.b)]
+        xm = -0.8 - spacing * (len(vehicle.elements) - 1 - k)
+        (ya, _), (yb, _) = ends
+        style = {"spring": "-", "damper": "--", "maxwell": "-."}[e.kind]
+        ax.plot([xm, xm], [ya, yb], color="k", lw=1.2, ls=style)
+        for y_end, x_end in ends:  # a leader from the element's end to the side of its mass
+            ax.plot([xm, x_end - 0.45], [y_end, y_end], color="0.6", lw=0.6, zorder=0)
+            ax.plot(xm, y_end, "o", color="k", ms=2.5)
         value = (
             f"{e.stiffness / 1e3:g} N/mm"
             if e.kind == "spring"
@@ -41,15 +43,15 @@ def plot_quarter_car_scheme(vehicle) -> plt.Figure:
             else f"{e.damping:g} Ns/m + {e.stiffness / 1e3:g} N/mm"
         )
         ax.text(
-            xm,
-            max(ya, yb) - 0.2,
-            f"{e.a[:5]}-{e.b[:5]}\n{e.kind}\n{value}",
-            fontsize=5.5,
-            ha="center",
-            va="bottom",
-            rotation=90,
-        )
-    ax.set_xlim(-0.9 - 0.42 * len(vehicle.elements), 1.6)
+            xm, 0.5 * (ya + yb), str(k + 1), fontsize=7, ha="center", va="center",
+            bbox={"boxstyle": "circle,pad=0.2", "fc": "w", "ec": "k", "lw": 0.6},
+        )  # fmt: skip
+        legend.append(f"{k + 1}  {e.a}-{e.b} {e.kind}: {value}")
+    ax.text(
+        -1.2 - spacing * len(vehicle.elements), ground_y + 0.1, "\n".join(legend), fontsize=7.5, va="bottom",
+        ha="left", family="monospace",
+    )  # fmt: skip
+    ax.set_xlim(-1.2 - spacing * len(vehicle.elements), 1.6)
     ax.set_ylim(ground_y - 0.5, 4.5)
     ax.axis("off")
     fig.suptitle("Fig. 13 analogue: the quarter car (front corner, MacPherson strut)")
@@ -87,7 +89,7 @@ def plot_transmissibility(
     ax.axhline(1.0, color="0.5", lw=0.7, ls=":")
     ax.set_ylim(0, 2.1)
     ax.set_xlim(0, 300)
-    ax.set_xlabel("Frequency [Hz]")
+    ax.set_xlabel("Frequency (Hz)")
     ax.set_ylabel("|a_upper mount / a_hub|")
     ax.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize=8)
     return ax
@@ -102,21 +104,34 @@ def plot_spectra(
     log: bool = False,
     predicted: dict[str, tuple] | None = None,
     styles: tuple[str, ...] | None = None,
+    split: float | None = None,
+    band: tuple[float, float] = (2.0, 250.0),
+    peaks: dict[str, np.ndarray] | None = None,
 ) -> plt.Axes:
     """Amplitude spectral densities (sqrt of PSD) of a few signals, optionally with predictions.
 
     ``styles``: a line style per curve (default solid), e.g. dashed for a curve that may lie on another.
+    ``split`` (Hz): a dotted line there, and each curve's label gives the share of its power in
+    ``band`` (Hz) lying below it (:func:`roadnoise_utils.vehicle.spectra.power_share`, as the
+    paper reads Fig. 11-12: where the power is). ``peaks`` (curve label -> Hz): marked on that
+    curve.
     """
     if ax is None:
         _, ax = plt.subplots(figsize=(8, 4))
     styles = styles or ("-",) * len(curves)
-    for (label, psd), colour, style in zip(curves.items(), ["tab:red", "tab:blue", "tab:green"], styles):
-        keep = (freqs >= f_range[0]) & (freqs <= f_range[1])
+    for (name, psd), colour, style in zip(curves.items(), ["tab:red", "tab:blue", "tab:green"], styles):
+        keep, label = (freqs >= f_range[0]) & (freqs <= f_range[1]), name
+        if split is not None:
+            label = f"{label}: {power_share((freqs, psd), 0.0, split, band=band):.0%} of the power below {split:g} Hz"
         (ax.semilogy if log else ax.plot)(freqs[keep], np.sqrt(psd[keep]), color=colour, ls=style, lw=1.2, label=label)
-        if predicted and label in predicted:
-            fp, pp = predicted[label]
+        if peaks and name in peaks:
+            ax.plot(peaks[name], np.interp(peaks[name], freqs, np.sqrt(psd)), "v", color=colour, ms=6)
+        if predicted and name in predicted:
+            fp, pp = predicted[name]
             k = (fp >= f_range[0]) & (fp <= f_range[1])
             (ax.semilogy if log else ax.plot)(fp[k], np.sqrt(pp[k]), "k--", lw=0.8)
+    if split is not None:
+        ax.axvline(split, color="0.4", ls=":", lw=1.0)
     ax.set_xlim(*f_range)
     ax.set_xlabel("Frequency (Hz)")
     ax.set_ylabel(ylabel)

@@ -39,7 +39,7 @@ def plot_road_spectra(
     ax.axvline(1 / 0.05, color="k", ls=":", lw=0.8)
     ax.text(1 / 0.05, ax.get_ylim()[1], " 5 cm", va="top", fontsize=8)
     ax.set_xlabel("wavenumber n (cycles/m)")
-    ax.set_ylabel("displacement PSD G(n) (m^3)")
+    ax.set_ylabel("displacement PSD G(n) (m³)")
     ax.set_title(title)
     ax.legend(fontsize=7)
     return ax

@@ -140,4 +140,5 @@ def plot_hub_frf(frfs: dict[str, FRFResult], f_max: float = 300.0, ax: plt.Axes 
     ax.set_ylabel("|G_H| (N/mm)")
     ax.set_xlim(0, f_max)
     ax.legend()
+    ax.set_title("G_H: hub force per unit hub displacement, footprint held")
     return ax

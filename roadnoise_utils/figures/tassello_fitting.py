@@ -19,6 +19,7 @@ def plot_order_scan(scans: dict[str, pd.DataFrame], tolerance: float = 0.01, ax:
     ax.set_xlabel("poles (= zeros) per tassello")
     ax.set_ylabel("relative RMS error, 0-250 Hz")
     ax.legend(fontsize=7)
+    ax.set_title("Fit error of the tasselli against the number of poles")
     return ax
 
 
@@ -27,8 +28,8 @@ def plot_fit(freqs: np.ndarray, target: np.ndarray, fitted: np.ndarray, title: s
     fig, (a1, a2) = plt.subplots(2, 1, figsize=(8, 5.5), sharex=True)
     a1.plot(freqs, np.abs(target) / 1e3, "k", lw=2.0, label="target (FEA)")
     a1.plot(freqs, np.abs(fitted) / 1e3, "--", color="tab:red", label="identified")
-    a2.plot(freqs, np.degrees(np.angle(target)), "k", lw=2.0)
-    a2.plot(freqs, np.degrees(np.angle(fitted)), "--", color="tab:red")
+    a2.plot(freqs, np.degrees(np.unwrap(np.angle(target))), "k", lw=2.0)  # unwrapped: no ±180° jumps
+    a2.plot(freqs, np.degrees(np.unwrap(np.angle(fitted))), "--", color="tab:red")
     a1.set_ylabel("|H_i| (N/mm)")
     a2.set_ylabel("phase (deg)")
     a2.set_xlabel("Frequency (Hz)")

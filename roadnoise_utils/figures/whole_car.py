@@ -26,8 +26,8 @@ def plot_car_layout(car, tracks: np.ndarray | None = None) -> plt.Figure:
     if tracks is not None:
         for y in tracks:
             ax.axhline(y, color="tab:brown", lw=0.3, alpha=0.6)
-    ax.annotate("", (positions[0, 0], -0.95), (positions[2, 0], -0.95), arrowprops={"arrowstyle": "<->"})
-    ax.text(0.5 * (positions[0, 0] + positions[2, 0]), -1.05, f"wheelbase {car.wheelbase:g} m", ha="center", va="top")
+    ax.annotate("", (positions[0, 0], -1.12), (positions[2, 0], -1.12), arrowprops={"arrowstyle": "<->"})
+    ax.text(0.5 * (positions[0, 0] + positions[2, 0]), -1.2, f"wheelbase {car.wheelbase:g} m", ha="center", va="top")
     ax.annotate(
         "",
         (positions[0, 0] + 0.45, positions[0, 1]),
@@ -44,7 +44,7 @@ def plot_car_layout(car, tracks: np.ndarray | None = None) -> plt.Figure:
         fontsize=8,
     )
     ax.set_xlim(positions[:, 0].min() - 1.4, positions[:, 0].max() + 1.2)
-    ax.set_ylim(-1.3, 1.1)
+    ax.set_ylim(-1.5, 1.1)
     ax.set_aspect("equal")
     ax.set_xlabel("x forward (m)")
     ax.set_ylabel("y left (m)")
@@ -108,7 +108,7 @@ def plot_wheelbase_filtering(check, notches: dict[str, np.ndarray], f_range: tup
             ax.axvline(f_notch, color="tab:red", lw=0.6, alpha=0.5, label="symmetric car's notches" if j == 0 else None)
         unit = "(m/s²)/√Hz" if name == "a_heave" else "(rad/s²)/√Hz"
         ax.set_ylabel(f"{label} ASD ({unit})")
-        ax.legend(fontsize=8, loc="upper right")
+    axes[0].legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))  # outside: the notches span the axes
     axes[-1].set_xlim(*f_range)
     axes[-1].set_xlabel("Frequency (Hz)")
     fig.suptitle(
@@ -212,5 +212,11 @@ def plot_rolling_cavity(result) -> plt.Figure:
                 ax.axvline(f_mode, color=colour, ls=":", lw=0.9)
         ax.set_ylabel(label)
         ax.set_xlabel("Frequency (Hz)")
-    axes[0].legend(fontsize=8, title="dotted: the waveguide's doublet", title_fontsize=8)
+    axes[1].legend(
+        fontsize=8,
+        title="dotted: the waveguide's doublet",
+        title_fontsize=8,
+        loc="upper left",
+        bbox_to_anchor=(1.01, 1.0),
+    )  # outside: the doublet lines span the axes
     return fig

@@ -50,8 +50,8 @@ import numpy as np
 import scipy.fft as sfft
 
 from .. import guards
-from ..road.input import ROAD_GRID, road_grid
-from .simulation import ModalSections, as_continuous_statespace, foh_coefficients, modal_sections
+from ..road.input import ROAD_GRID, profile_input, road_grid
+from .simulation import ModalSections, as_continuous_statespace, foh_coefficients, modal_sections, simulate
 
 #: The impulse responses are cut where the slowest mode has decayed to this fraction (-).
 DECAY = 1e-17
@@ -289,11 +289,16 @@ def road_hub_force(
     :func:`.simulation.simulate`'s on that input. The road is read in pieces of :func:`block_size`
     samples (overlap-save), so the memory does not grow with the record beyond its time, travel and
     force arrays; what does not depend on the road is built once per tire and speed (:func:`road_path`).
+    A model with blocks that have no modal form (:class:`.simulation.ExactBlock`: repeated poles)
+    is simulated by :func:`.simulation.simulate` on :func:`.road.input.profile_input` instead.
     """
     sections = system if isinstance(system, ModalSections) else modal_sections(as_continuous_statespace(system))
     n_tasselli = static.tasselli.n
     if sections.n_inputs != n_tasselli:
         raise ValueError(f"system has {sections.n_inputs} inputs; the footprint has {n_tasselli} tasselli")
+    if sections.blocks:  # repeated poles: no sums of exponentials; the inputs formed and simulated exactly
+        road = profile_input(static, profile, speed, distance, sample_rate, oversample)
+        return RoadHubForce(t=road.t, distance=road.distance, force=simulate(sections, road).force, speed=road.speed)
 
     def check(n: int, n_grid: int, step: float, dt: float) -> None:
         """The record's time, travel and force, the path's kernels and spectra and one block's spectra."""

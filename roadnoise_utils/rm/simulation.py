@@ -5,7 +5,10 @@ tassello, every pole pair, is an independent second-order system driven by one i
 exploit it instead of stepping a dense 1000-state recursion:
 
 1. the state matrix is split into its independent blocks (connected components of its
-   sparsity pattern) and each small block is diagonalised;
+   sparsity pattern) and each small block is diagonalised, unless its eigenvectors are
+   ill-conditioned (a repeated pole, a Jordan chain, poles a hair apart: the modal gains
+   would be huge and cancel), in which case the block is stepped by its exact discretisation
+   (:class:`ExactBlock`);
 2. each mode is discretised *exactly* for an input that varies linearly between samples
    (first-order hold, FOH; the same assumption as python-control's ``forced_response``):
    :math:`x_{k+1} = e^{p h} x_k + \\gamma_0 v_k + \\gamma_1 v_{k+1}`;
@@ -22,6 +25,7 @@ from dataclasses import dataclass
 
 import control
 import numpy as np
+import scipy.linalg as sla
 import scipy.sparse as sp
 from scipy.signal import lfilter
 from scipy.sparse.csgraph import connected_components
@@ -34,6 +38,10 @@ from ..road.input import RoadInput
 PARTS = 2
 #: Modes of :func:`response` stepped and summed together (their histories are held at once).
 MODES_AT_ONCE = 16
+#: Largest condition number of a block's eigenvectors for which it is simulated as modal sections.
+#: The sections' gains then cancel by at most this factor, so round-off stays below ~1e-11 of
+#: the response; a block above it (defective or nearly so) is an :class:`ExactBlock`.
+CONDITION_LIMIT = 1e5
 
 
 @dataclass(frozen=True)
@@ -50,16 +58,68 @@ class Section:
 
 
 @dataclass(frozen=True, eq=False)
+class ExactBlock:
+    """A block of the state matrix that cannot be diagonalised safely (repeated poles, a Jordan
+    chain), stepped by its exact FOH discretisation.
+
+    ``a`` (m, m) the block, balanced; ``b`` (m, n_inputs) its input matrix; ``c`` (n_outputs, m)
+    its output matrix. :meth:`output` is exact for any ``a``: the discretisation of
+    ``scipy.linalg.expm`` (as ``forced_response`` and ``scipy.signal.lsim`` do), then the
+    discrete recursion in the complex Schur basis of the step matrix, one first-order filter
+    per state from the last to the first (upper triangular: each is driven by the ones after it).
+    """
+
+    a: np.ndarray
+    b: np.ndarray
+    c: np.ndarray
+
+    @classmethod
+    def balanced(cls, a: np.ndarray, b: np.ndarray, c: np.ndarray) -> ExactBlock:
+        """The block with its states scaled to balance ``a`` (a companion form's entries span decades)."""
+        balanced_a, (scale, _) = sla.matrix_balance(a, permute=False, separate=True)
+        return cls(balanced_a, b / scale[:, None], np.atleast_2d(c) * scale[None, :])
+
+    def output(self, u: np.ndarray, dt: float) -> np.ndarray:
+        """Outputs (n_outputs, n_samples) for inputs ``u`` (n_inputs, n_samples) from rest, FOH, step ``dt``."""
+        m = self.a.shape[0]
+        v = self.b @ u  # the block's drive, piecewise linear as u
+        augmented = np.zeros((3 * m, 3 * m))
+        augmented[:m, :m], augmented[:m, m : 2 * m], augmented[m : 2 * m, 2 * m :] = (
+            self.a * dt,
+            np.eye(m) * dt,
+            np.eye(m),
+        )
+        step = sla.expm(augmented)
+        ad, bd1 = step[:m, :m], step[:m, 2 * m :]
+        bd0 = step[:m, m : 2 * m] - bd1
+        # x[k+1] = Ad x[k] + Bd0 v[k] + Bd1 v[k+1]; w = x - Bd1 v: w[k+1] = Ad w[k] + (Ad Bd1 + Bd0) v[k]
+        t, q = sla.schur(ad.astype(complex), output="complex")
+        drive = q.conj().T @ ((ad @ bd1 + bd0) @ v)
+        start = -(q.conj().T @ (bd1 @ v[:, 0]))  # x[0] = 0
+        z = np.empty_like(drive)
+        for i in range(m - 1, -1, -1):
+            z[i] = lfilter([0.0, 1.0], [1.0, -t[i, i]], drive[i] + t[i, i + 1 :] @ z[i + 1 :], zi=[start[i]])[0]
+        return (self.c @ q @ z).real + self.c @ (bd1 @ v)
+
+
+def well_conditioned(vectors: np.ndarray) -> bool:
+    """Whether a block's eigenvectors are independent enough to simulate it as modal sections."""
+    return vectors.shape[0] == 1 or bool(np.linalg.cond(vectors) <= CONDITION_LIMIT)
+
+
+@dataclass(frozen=True, eq=False)
 class ModalSections:
     """A state-space model as parallel modal sections plus its direct term.
 
-    Build with :func:`modal_sections`; it is the form :func:`simulate` runs.
+    Build with :func:`modal_sections`; it is the form :func:`simulate` runs. ``blocks``: the
+    blocks of the state matrix simulated exactly instead (:class:`ExactBlock`; none in a fitted tire).
     """
 
     sections: list[Section]
     direct: np.ndarray  # (n_inputs,) feedthrough to the (single) output
     n_inputs: int
     n_states: int
+    blocks: tuple[ExactBlock, ...] = ()
 
 
 def modal_sections(system: control.StateSpace, tol: float = 1e-12) -> ModalSections:
@@ -67,7 +127,8 @@ def modal_sections(system: control.StateSpace, tol: float = 1e-12) -> ModalSecti
 
     The state matrix is divided into blocks that do not interact (connected components of its
     sparsity pattern); each block is diagonalised on its own, so a block-diagonal model of any
-    size costs nothing but its small blocks.
+    size costs nothing but its small blocks. A block whose eigenvectors are ill-conditioned
+    (:data:`CONDITION_LIMIT`) is kept whole as an :class:`ExactBlock`.
     """
     system = as_continuous_statespace(system)
     if system.noutputs != 1:
@@ -77,9 +138,15 @@ def modal_sections(system: control.StateSpace, tol: float = 1e-12) -> ModalSecti
     pattern = sp.csr_matrix(np.abs(a) > 0) + sp.identity(n, format="csr")
     n_blocks, labels = connected_components(pattern, directed=False)
     sections: list[Section] = []
+    blocks: list[ExactBlock] = []
+    poles: list[complex] = []
     for block in range(n_blocks):
         idx = np.nonzero(labels == block)[0]
         lam, vec = np.linalg.eig(a[np.ix_(idx, idx)])
+        poles += list(lam)
+        if not well_conditioned(vec):
+            blocks.append(ExactBlock.balanced(a[np.ix_(idx, idx)], b[idx, :], c[:1, idx]))
+            continue
         b_modal = np.linalg.solve(vec, b[idx, :])
         c_modal = c[0, idx] @ vec
         scale = max(np.max(np.abs(lam)), 1.0)
@@ -92,13 +159,13 @@ def modal_sections(system: control.StateSpace, tol: float = 1e-12) -> ModalSecti
                     sections.append(Section(complex(p.real), complex(gain.real), int(source)))
                 else:
                     sections.append(Section(complex(p), complex(gain), int(source)))
-    unstable = [s.pole for s in sections if s.pole.real > 0]
+    unstable = [p for p in poles if p.real > 0]
     if unstable:
         guards.warn(
             f"the model has {len(unstable)} unstable pole(s) (largest real part {max(p.real for p in unstable):.3g} 1/s): "
             "its response grows without bound; a tire model should be stable"
         )
-    return ModalSections(sections=sections, direct=d[0].copy(), n_inputs=b.shape[1], n_states=n)
+    return ModalSections(sections=sections, direct=d[0].copy(), n_inputs=b.shape[1], n_states=n, blocks=tuple(blocks))
 
 
 def foh_coefficients(pole: complex, dt: float) -> tuple[complex, complex, complex]:
@@ -195,7 +262,8 @@ def _run(sections: ModalSections, u: np.ndarray, dt: float) -> np.ndarray:
             groups.append([section])
     # lfilter releases the GIL: two parts of the sections, on two threads where the cores are free
     parts = [groups[k::PARTS] for k in range(PARTS)]
-    return sections.direct @ u + sum(thread_map(run, parts))
+    exact = sum((block.output(u, dt)[0] for block in sections.blocks), np.zeros(u.shape[1]))
+    return sections.direct @ u + sum(thread_map(run, parts)) + exact
 
 
 def as_continuous_statespace(system) -> control.StateSpace:
@@ -272,7 +340,8 @@ def response(system: control.StateSpace, t: np.ndarray, u: np.ndarray) -> np.nda
     """All outputs (n_outputs, n_samples) of any stable LTI model for inputs ``u`` (FOH, zero state).
 
     The method of :func:`simulate` for a model with many inputs and outputs: each independent
-    block of the state matrix is diagonalised once, every mode (the upper member of a conjugate
+    block of the state matrix is diagonalised once (or, ill-conditioned, stepped exactly:
+    :class:`ExactBlock`), every mode (the upper member of a conjugate
     pair) is driven by its combination of the inputs and stepped once (exact FOH recursion),
     and the outputs are the modes' real parts weighted by the output matrix.
     """
@@ -291,6 +360,10 @@ def response(system: control.StateSpace, t: np.ndarray, u: np.ndarray) -> np.nda
     for block in range(n_blocks):
         idx = np.nonzero(labels == block)[0]
         lam, vec = np.linalg.eig(a[np.ix_(idx, idx)])
+        if not well_conditioned(vec):
+            unstable += list(lam[lam.real > 0])
+            out += ExactBlock.balanced(a[np.ix_(idx, idx)], b[idx, :], c[:, idx]).output(u, dt)
+            continue
         b_modal, c_modal = np.linalg.solve(vec, b[idx, :]), c[:, idx] @ vec
         scale = max(np.max(np.abs(lam)), 1.0)
         kept = np.nonzero(lam.imag >= -1e-12 * scale)[0]  # a conjugate pair's upper member carries both

@@ -5,9 +5,15 @@ from __future__ import annotations
 import control
 import numpy as np
 import pytest
+import scipy.linalg as sla
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import roadnoise_utils as ru
+from roadnoise_utils.repro import stages
+from roadnoise_utils.rm import aggregated, simulation
 from roadnoise_utils.rm.simulation import foh_coefficients
+from roadnoise_utils.road.input import profile_input
 
 
 def test_simulation_equals_python_control(drum_tire):
@@ -85,3 +91,132 @@ def test_causality_no_force_before_the_cleat_reaches_the_footprint(drum_tire):
     before = run.distance < ru.experiments.cleat.footprint_entry(static) - 1e-3
     assert before.sum() > 10
     assert np.max(np.abs(run.force[before])) < 1e-9 * np.max(np.abs(run.force))
+
+
+# --- Repeated and nearly repeated poles (defective state matrices) --------------------------------
+# A transfer function with a double pole, a Jordan block, a closed loop or a rational fit with two
+# poles a hair apart has eigenvectors that are (nearly) parallel: diagonalising it gives huge modal
+# gains that cancel. Such blocks are stepped by their exact discretisation instead (ExactBlock). The
+# reference is python-control's forced_response (which agrees with scipy.signal.lsim to ~1e-14).
+
+DT = 1e-4
+SAMPLES = 3000
+#: Agreement asked of every model, relative to the peak of the response.
+TOLERANCE = 1e-9
+
+
+def _road(u: np.ndarray) -> ru.RoadInput:
+    t = DT * np.arange(u.shape[1])
+    return ru.RoadInput(t=t, distance=t, u=u, speed=1.0, description="test input")
+
+
+def _inputs(n_inputs: int, seed: int) -> np.ndarray:
+    rng = np.random.default_rng(seed)
+    t = DT * np.arange(SAMPLES)
+    return np.sin(2 * np.pi * rng.uniform(5, 200, (n_inputs, 1)) * t) + 0.3 * rng.standard_normal((n_inputs, SAMPLES))
+
+
+def _peak_error(system: control.StateSpace, u: np.ndarray) -> float:
+    reference = control.forced_response(system, T=DT * np.arange(u.shape[1]), U=u).outputs
+    ours = ru.simulate(system, _road(u)).force
+    return float(np.abs(ours - reference).max() / np.abs(reference).max())
+
+
+# the cases of the bug report, each wrong by a factor or more before: a triple real pole, a Jordan
+# block, a double real pole with a double pair, a double real pole driven by a sine
+CASES = {
+    "triple real pole": control.ss(control.tf([1e6], np.poly([-200.0] * 3))),
+    "Jordan block": control.ss([[-300.0, 1.0], [0.0, -300.0]], [[0.0], [1.0]], [[1.0, 0.0]], [[0.0]]),
+    "double real pole, double pair": control.ss(
+        control.tf([1e9], np.real(np.poly([-100, -100, -50 + 300j, -50 - 300j, -50 + 300j, -50 - 300j])))
+    ),
+    "double real pole, sine": control.ss(control.tf([1e4], np.poly([-100.0, -100.0]))),
+}
+
+
+@pytest.mark.parametrize("name", list(CASES))
+def test_the_reported_defective_models_equal_forced_response(name):
+    system = CASES[name]
+    u = np.sin(2 * np.pi * 30 * DT * np.arange(SAMPLES))[None, :]
+    assert len(simulation.modal_sections(system).blocks) == 1
+    assert _peak_error(system, u) < TOLERANCE
+
+
+def _jordan(pole: float, size: int) -> np.ndarray:
+    return pole * np.eye(size) + np.diag(np.full(size - 1, abs(pole) * 0.3), 1)
+
+
+def _repeated_pair(sigma: float, omega: float) -> np.ndarray:
+    pair = np.array([[sigma, omega], [-omega, sigma]])
+    return np.block([[pair, 0.5 * abs(sigma) * np.eye(2)], [np.zeros((2, 2)), pair]])
+
+
+def _near_pair(pole: float, separation: float) -> np.ndarray:
+    return np.array([[pole, abs(pole)], [0.0, pole * (1.0 + separation)]])
+
+
+def _normal_pair(sigma: float, omega: float) -> np.ndarray:
+    return np.array([[sigma, omega], [-omega, sigma]])
+
+
+poles = st.floats(-2500.0, -40.0)
+frequencies = st.floats(2 * np.pi * 20, 2 * np.pi * 300)
+blocks = st.one_of(
+    st.builds(_jordan, poles, st.integers(2, 3)),  # double and triple real poles, Jordan chains
+    st.builds(_repeated_pair, st.floats(-300.0, -20.0), frequencies),  # a repeated complex pair
+    st.builds(_near_pair, poles, st.floats(1e-8, 1e-3)),  # two real poles 1e-8 .. 1e-3 apart
+    st.builds(_normal_pair, st.floats(-300.0, -20.0), frequencies),  # a normal block beside them
+)
+
+
+@settings(max_examples=25, deadline=None)
+@given(parts=st.lists(blocks, min_size=1, max_size=3), n_inputs=st.integers(1, 2), seed=st.integers(0, 2**16))
+def test_any_stable_model_with_repeated_poles_equals_forced_response(parts, n_inputs, seed):
+    """Random block-diagonal models mixing Jordan chains, repeated pairs, near-repeated and normal
+    blocks, each block in a random basis (a similarity transform): equal to ``forced_response``."""
+    rng = np.random.default_rng(seed)
+    mixed = []
+    for block in parts:
+        basis = np.eye(block.shape[0]) + 0.3 * rng.standard_normal(block.shape)
+        mixed.append(basis @ block @ np.linalg.inv(basis))
+    a = sla.block_diag(*mixed)
+    system = control.ss(a, rng.standard_normal((a.shape[0], n_inputs)), rng.standard_normal((1, a.shape[0])), 0.0)
+    assert _peak_error(system, _inputs(n_inputs, seed)) < TOLERANCE
+
+
+def test_the_multi_output_response_steps_a_defective_block_exactly():
+    triple, double = control.ss(CASES["triple real pole"]), control.ss(control.tf([2e3, 1e6], np.poly([-150.0] * 2)))
+    a = sla.block_diag(np.asarray(triple.A), np.asarray(double.A))
+    b = np.vstack([np.asarray(triple.B), np.asarray(double.B)])
+    c = np.vstack(
+        [np.hstack([np.asarray(triple.C), np.zeros((1, 2))]), np.hstack([np.zeros((1, 3)), np.asarray(double.C)])]
+    )
+    system = control.ss(a, b, c, np.zeros((2, 1)))  # two outputs, one per defective block
+    u = _inputs(1, 7)
+    t = DT * np.arange(SAMPLES)
+    reference = control.forced_response(system, T=t, U=u).outputs
+    ours = simulation.response(system, t, u)
+    assert np.abs(ours - reference).max() < TOLERANCE * np.abs(reference).max()
+
+
+def test_a_fitted_tire_has_no_exact_block_and_keeps_its_modal_sections():
+    """The fast path stays for the models the collection fits: 1x1 and 2x2 blocks, one per pole."""
+    sections = simulation.modal_sections(ru.assemble_fixed_hub(stages.fit_tasselli("165_65R14")))
+    assert sections.blocks == () and len(sections.sections) > 0
+
+
+def test_the_aggregated_road_path_gives_a_defective_tire_s_exact_force():
+    """A tire whose tasselli share a Jordan block: the road path equals ``forced_response`` on the
+    tasselli's inputs (it simulates the formed inputs: there are no sums of exponentials to aggregate)."""
+    static = stages.solve_static("165_65R14")
+    n = static.tasselli.n
+    rng = np.random.default_rng(3)
+    system = control.ss(_jordan(-400.0, 2), rng.standard_normal((2, n)) * 1e6, [[1.0, 0.5]], np.zeros((1, n)))
+    x = np.linspace(-1.0, 5.0, 6001)
+    z = 1e-5 * np.cumsum(rng.standard_normal(x.size))
+    profile = lambda s: np.interp(s, x, z)  # noqa: E731
+    road = profile_input(static, profile, 20.0, (0.0, 0.5), 9600.0)
+    result = aggregated.road_hub_force(system, static, profile, 20.0, (0.0, 0.5), 9600.0)
+    reference = control.forced_response(system, T=road.t - road.t[0], U=road.u).outputs
+    np.testing.assert_array_equal(result.t, road.t)
+    assert np.abs(result.force - reference).max() < TOLERANCE * np.abs(reference).max()
