@@ -19,8 +19,12 @@ cached stage function (:mod:`~roadnoise_utils.repro.stages`), which computes the
   SHA-256 of its contents in the entry; an entry whose files changed since is stale and
   recomputed. So a stage keyed by a file's *name* (a sweep over road textures or vehicles)
   still follows the file's contents, by construction.
-* **Never trusted blindly**: each file carries a SHA-256 of its payload; a truncated,
-  corrupted or unreadable file is discarded with a warning and the stage recomputed.
+* **Never trusted blindly**: each file carries a SHA-256 of its payload and the key it was
+  computed for; a truncated, corrupted or unreadable file, or one holding another key's entry
+  (a file renamed or copied by hand), is discarded with a warning and the stage recomputed.
+* **The same bits wherever it runs**: a stage computes with the BLAS/LAPACK pools held to one
+  thread (threadpoolctl), as in a dask worker or a reproduction kernel, so a result does not
+  depend on which process computed it first (two threads sum in another order: 1-2 ulp).
 * **Never in the way**: a cache folder that cannot be written (read-only, a full disk, a path
   that is a file) gives a warning and the computed result.
 * **Trust**: entries are pickles. The digest detects a truncated or corrupted file, not a
@@ -45,8 +49,8 @@ import json
 import os
 import pickle
 import tempfile
+import threading
 import time
-import warnings
 from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
 from types import ModuleType
@@ -55,7 +59,9 @@ from typing import Any, TypeVar
 import control
 import numpy as np
 import scipy
+from threadpoolctl import ThreadpoolController
 
+from .. import guards
 from .paths import cache_dir, changed_files, recording_reads, replay_reads
 
 T = TypeVar("T")
@@ -187,6 +193,10 @@ def cache_key(stage: str, inputs: dict[str, Any], fingerprint: str = "") -> str:
 # ---------------------------------------------------------------- files
 
 
+class _EarlierFormat(Exception):
+    """A sound entry of the cache's earlier format (result, data files read), without its key."""
+
+
 def _read(path: Path) -> Any:
     data = path.read_bytes()
     if not data.startswith(_MAGIC):
@@ -195,9 +205,13 @@ def _read(path: Path) -> Any:
     if hashlib.sha256(payload).hexdigest().encode() != digest:
         raise ValueError("checksum mismatch")
     entry = pickle.loads(payload)
-    if not (isinstance(entry, tuple) and len(entry) == 2 and isinstance(entry[1], dict)):
-        raise ValueError("not a (result, data files read) entry")
-    return entry
+    if isinstance(entry, tuple) and len(entry) == 2 and isinstance(entry[1], dict):
+        raise _EarlierFormat  # written before entries held their key: recomputed without a word
+    if not (isinstance(entry, tuple) and len(entry) == 3 and isinstance(entry[1], dict)):
+        raise ValueError("not a (result, data files read, key) entry")
+    if entry[2] != path.stem.rsplit("-", 1)[-1]:
+        raise ValueError(f"it holds the entry of key {entry[2]!r}, not of its name's")
+    return entry[:2]
 
 
 def _try_read(path: Path) -> tuple[bool, Any]:
@@ -206,8 +220,12 @@ def _try_read(path: Path) -> tuple[bool, Any]:
         return False, None
     try:
         return True, _read(path)
+    except _EarlierFormat:
+        with contextlib.suppress(OSError):
+            path.unlink()
+        return False, None
     except Exception as exc:  # corrupted, truncated or from an incompatible version
-        warnings.warn(f"discarding unreadable cache file {path.name} ({exc}); recomputing", stacklevel=3)
+        guards.warn(f"discarding unreadable cache file {path.name} ({exc}); recomputing", stacklevel=3)
         with contextlib.suppress(OSError):
             path.unlink()
         return False, None
@@ -292,7 +310,7 @@ def _usable_folder() -> Path | None:
     try:
         folder.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
-        warnings.warn(f"stage cache {folder} cannot be used ({exc}); computing without it", stacklevel=4)
+        guards.warn(f"stage cache {folder} cannot be used ({exc}); computing without it", stacklevel=4)
         return None
     _sweep_stale(folder)
     return folder
@@ -306,11 +324,42 @@ def cache_enabled() -> bool:
     return os.environ.get("ROADNOISE_CACHE", "on").lower() not in ("off", "0", "false", "no")
 
 
+#: Stages computing in this process, the lock of that count and the BLAS limit they hold.
+_depth = 0
+_depth_lock = threading.Lock()
+_limit = None
+
+
+@functools.cache
+def _blas() -> ThreadpoolController:
+    return ThreadpoolController()
+
+
+@contextlib.contextmanager
+def one_blas_thread() -> Iterator[None]:
+    """BLAS/LAPACK held to one thread while any stage computes in this process (re-entrant and
+    thread-safe: set when the first stage starts, lifted when the last one ends)."""
+    global _depth, _limit
+    with _depth_lock:
+        if _depth == 0:
+            _limit = _blas().limit(limits=1)
+        _depth += 1
+    try:
+        yield
+    finally:
+        with _depth_lock:
+            _depth -= 1
+            if _depth == 0:
+                _limit.restore_original_limits()
+                _limit = None
+
+
 def _timed(name: str, compute: Callable[[], T], key: str = "-") -> T:
-    """``compute()``; with ``ROADNOISE_STAGE_LOG`` set, a line appended to that file per stage run: the stage's
-    name, its wall time (s), the process id and the cache key (``-`` with the cache off)."""
+    """``compute()`` on one BLAS thread; with ``ROADNOISE_STAGE_LOG`` set, a line appended to that file per stage
+    run: the stage's name, its wall time (s), the process id and the cache key (``-`` with the cache off)."""
     start = time.perf_counter()
-    value = compute()
+    with one_blas_thread():
+        value = compute()
     _log_line(name, time.perf_counter() - start, key)
     return value
 
@@ -356,7 +405,7 @@ def cached(
     folder = _usable_folder()
     if folder is None:
         STATS[name, "computed"] += 1
-        return compute()
+        return _timed(name, compute)
     path = folder / f"{name}-{key}.pkl"
     found, value = _current(path, name)
     if found:
@@ -370,9 +419,9 @@ def cached(
             value = _timed(name, compute, key)
         STATS[name, "computed"] += 1
         try:
-            _write(path, (value, reads))
+            _write(path, (value, reads, key))
         except OSError as exc:
-            warnings.warn(f"stage cache not written ({exc}); returning the computed {name}", stacklevel=2)
+            guards.warn(f"stage cache not written ({exc}); returning the computed {name}", stacklevel=2)
         return value
 
 

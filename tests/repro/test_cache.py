@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 import roadnoise_utils as ru
+from roadnoise_utils.guards import RoadnoiseWarning
 from roadnoise_utils.repro import cache
 from roadnoise_utils.tire.ring.spec import SECTIONS, Compound
 
@@ -76,11 +77,11 @@ def test_cached_stage_is_reused_and_corruption_recomputed(cache_dir):
     (path,) = cache_dir.glob("demo-*.pkl")
     data = path.read_bytes()
     path.write_bytes(data[:-7] + b"garbage")  # same length, wrong checksum
-    with pytest.warns(UserWarning, match="discarding"):
+    with pytest.warns(RoadnoiseWarning, match="discarding"):
         recomputed = cache.cached("demo", {"x": 1.0}, compute)
     assert len(calls) == 2 and np.array_equal(recomputed["value"], first["value"])
     path.write_bytes(data[: len(data) // 2])  # truncated
-    with pytest.warns(UserWarning, match="discarding"):
+    with pytest.warns(RoadnoiseWarning, match="discarding"):
         cache.cached("demo", {"x": 1.0}, compute)
     assert len(calls) == 3
     assert not list(cache_dir.glob("*.tmp"))  # atomic writes leave no temporary files
@@ -113,7 +114,7 @@ def test_unwritable_cache_warns_and_returns_the_result(tmp_path, monkeypatch):
     not_a_folder.write_text("x")
     monkeypatch.setenv("ROADNOISE_CACHE_DIR", str(not_a_folder))
     monkeypatch.delenv("ROADNOISE_CACHE", raising=False)
-    with pytest.warns(UserWarning, match="cannot be used"):
+    with pytest.warns(RoadnoiseWarning, match="cannot be used"):
         assert cache.cached("demo", {"x": 3.0}, lambda: 42) == 42
     read_only = tmp_path / "read-only"
     read_only.mkdir()
@@ -123,7 +124,7 @@ def test_unwritable_cache_warns_and_returns_the_result(tmp_path, monkeypatch):
     else:
         read_only.chmod(0o500)
     try:
-        with pytest.warns(UserWarning, match="not written"):
+        with pytest.warns(RoadnoiseWarning, match="not written"):
             assert cache.cached("demo", {"x": 4.0}, lambda: 43) == 43
     finally:
         read_only.chmod(0o700)
@@ -215,7 +216,7 @@ def test_a_full_disk_warns_and_leaves_no_partial_file(cache_dir, monkeypatch):
         raise OSError(28, "No space left on device")
 
     monkeypatch.setattr(cache.os, "fsync", full)
-    with pytest.warns(UserWarning, match="No space left on device"):
+    with pytest.warns(RoadnoiseWarning, match="No space left on device"):
         assert cache.cached("demo", {"x": 9.0}, lambda: 5) == 5
     assert not list(cache_dir.glob("*.tmp")) and not list(cache_dir.glob("*.pkl"))
     monkeypatch.undo()
@@ -305,3 +306,53 @@ def test_every_reader_of_data_files_records_what_it_reads():
                 }
                 assert "record_read" in calls, f"{path.name}:{node.name} reads a file ({_file_reads(node)}) unrecorded"
     assert readers >= 5  # read_toml, the road CSV, OpenCRG, UFF 58 and the footprint CSV at least
+
+
+def test_an_entry_under_another_key_s_name_is_refused(cache_dir):
+    """A file copied or renamed by hand to another key's name would serve the other inputs' result."""
+    cache.cached("demo", {"x": 1.0}, lambda: "one")
+    (one,) = cache_dir.glob("demo-*.pkl")
+    cache.cached("demo", {"x": 2.0}, lambda: "two")
+    (two,) = set(cache_dir.glob("demo-*.pkl")) - {one}
+    shutil.copy(one, two)
+    with pytest.warns(RoadnoiseWarning, match="holds the entry of key"):
+        assert cache.cached("demo", {"x": 2.0}, lambda: "two, recomputed") == "two, recomputed"
+    assert cache.cached("demo", {"x": 1.0}, lambda: "not called") == "one"
+
+
+def _blas_threads() -> list[int]:
+    from threadpoolctl import threadpool_info
+
+    return [pool["num_threads"] for pool in threadpool_info() if pool["user_api"] == "blas"]
+
+
+def test_a_stage_computes_on_one_blas_thread_and_the_limit_is_lifted_after(cache_dir):
+    from threadpoolctl import threadpool_limits
+
+    with threadpool_limits(2):
+        before = _blas_threads()
+        inside = cache.cached("demo", {"x": 3.0}, lambda: cache.cached("inner", {"y": 1}, _blas_threads))
+        assert _blas_threads() == before  # restored once the outer stage ended
+    assert set(inside) == {1}
+
+
+def test_a_stage_gives_the_same_bits_whatever_blas_threads_its_caller_runs(monkeypatch):
+    """Two BLAS threads sum in another order: the loaded state differed by 1-2 ulp (2.4e-8 Pa of a
+    0.3 MPa contact pressure) between a caller on two threads and one on one (a dask worker)."""
+    from threadpoolctl import threadpool_limits
+
+    monkeypatch.setenv("ROADNOISE_CACHE", "off")
+    with threadpool_limits(2):
+        two = ru.stages.solve_static("165_65R14")
+    with threadpool_limits(1):
+        one = ru.stages.solve_static("165_65R14")
+    np.testing.assert_array_equal(two.node_pressure, one.node_pressure)
+    assert two.deflection == one.deflection
+
+
+def test_an_entry_of_the_earlier_format_is_recomputed_without_a_warning(cache_dir, recwarn):
+    cache.cached("demo", {"x": 4.0}, lambda: "new")
+    (path,) = cache_dir.glob("demo-*.pkl")
+    cache._write(path, ("old", {}))  # a sound file as written before entries held their key
+    assert cache.cached("demo", {"x": 4.0}, lambda: "recomputed") == "recomputed"
+    assert not [w for w in recwarn if issubclass(w.category, RoadnoiseWarning)]
