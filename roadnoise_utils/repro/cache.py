@@ -62,7 +62,7 @@ import scipy
 from threadpoolctl import ThreadpoolController
 
 from .. import guards
-from .paths import cache_dir, changed_files, recording_reads, replay_reads
+from .paths import cache_dir, changed_files, flag_setting, path_setting, recording_reads, replay_reads
 
 T = TypeVar("T")
 _MAGIC = b"roadnoise-cache-v3\n"
@@ -320,8 +320,9 @@ def _usable_folder() -> Path | None:
 
 
 def cache_enabled() -> bool:
-    """Whether the cache is on (``ROADNOISE_CACHE`` is not ``off``/``0``/``false``/``no``)."""
-    return os.environ.get("ROADNOISE_CACHE", "on").lower() not in ("off", "0", "false", "no")
+    """Whether the cache is on: ``ROADNOISE_CACHE`` unset or on (``off``/``0``/``false``/``no`` turn it
+    off; any other value is an error naming the valid ones)."""
+    return flag_setting("ROADNOISE_CACHE", True)
 
 
 #: Stages computing in this process, the lock of that count and the BLAS limit they hold.
@@ -365,11 +366,24 @@ def _timed(name: str, compute: Callable[[], T], key: str = "-") -> T:
 
 
 def _log_line(name: str, seconds: float, key: str) -> None:
-    """With ``ROADNOISE_STAGE_LOG`` set, append ``name, seconds, process id, key`` to that file (tab-separated)."""
-    log = os.environ.get("ROADNOISE_STAGE_LOG")
-    if log:
+    """With ``ROADNOISE_STAGE_LOG`` set, append ``name, seconds, process id, key`` to that file (tab-separated).
+
+    A diagnostic never fails a computation: a log that cannot be written is reported once per
+    process and file (a warning) and the stage's result is kept.
+    """
+    if not os.environ.get("ROADNOISE_STAGE_LOG"):
+        return
+    log = path_setting("ROADNOISE_STAGE_LOG", Path())
+    try:
         with open(log, "a") as out:
             out.write(f"{name}\t{seconds:.2f}\t{os.getpid()}\t{key}\n")
+    except OSError as exc:
+        _warn_log_once(str(log), str(exc))
+
+
+@functools.cache
+def _warn_log_once(log: str, reason: str) -> None:
+    guards.warn(f"ROADNOISE_STAGE_LOG = {log!r} cannot be written ({reason}): the stages run without their log", 5)
 
 
 def cached(

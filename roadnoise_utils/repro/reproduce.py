@@ -354,6 +354,19 @@ def _summary(table, where: Path) -> int:
     return claims.exit_status(table)
 
 
+def output_folder_problem(out: Path) -> str:
+    """Why the reproduction could not write its figures to ``out`` ("" if it can), found before any
+    notebook runs: a file in the way, or a parent folder that cannot be written."""
+    existing = next((p for p in (out, *out.parents) if p.exists()), None)
+    if existing is None:
+        return "no part of the path exists"
+    if not existing.is_dir():
+        return f"{existing} is a file, not a folder"
+    if not os.access(existing, os.W_OK | os.X_OK):
+        return f"{existing} cannot be written"
+    return ""
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description="Execute every notebook in order, write the figures and the report.")
     parser.add_argument("--notebooks", type=Path, default=REPO_ROOT / "notebooks")
@@ -382,6 +395,9 @@ def main(argv: list[str] | None = None) -> int:
     if args.workers < 1:
         parser.error(f"--workers = {args.workers}: valid range is >= 1")
     out = args.figures or figure_dir()
+    problem = output_folder_problem(out)
+    if problem:
+        parser.error(f"--figures {out}: {problem}")
     if args.report_only:
         print("evaluating the paper's claims ...")
         table = claims.report()

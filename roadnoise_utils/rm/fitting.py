@@ -395,6 +395,11 @@ def fit_tasselli(
     _check_options(orders[0], iterations, tolerance)
     if f_max is not None:
         guards.real("f_max", f_max, 0.0, lo_open=True, unit="Hz")
+        if f_max > freqs.max() * (1 + 1e-9):
+            guards.warn(
+                f"f_max = {f_max:g} Hz is beyond the FRFs' last frequency {freqs.max():g} Hz: the fit covers "
+                f"0-{freqs.max():g} Hz only"
+            )
     band = freqs <= f_max if f_max is not None else np.ones(freqs.size, bool)
     if not band.any():
         raise ValueError(f"no frequency below f_max = {f_max} Hz")

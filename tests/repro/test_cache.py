@@ -356,3 +356,24 @@ def test_an_entry_of_the_earlier_format_is_recomputed_without_a_warning(cache_di
     cache._write(path, ("old", {}))  # a sound file as written before entries held their key
     assert cache.cached("demo", {"x": 4.0}, lambda: "recomputed") == "recomputed"
     assert not [w for w in recwarn if issubclass(w.category, RoadnoiseWarning)]
+
+
+@pytest.mark.parametrize("value", ["of", "enabled", " "])
+def test_an_unrecognised_cache_setting_is_an_error_naming_the_valid_values(monkeypatch, value):
+    monkeypatch.setenv("ROADNOISE_CACHE", value)
+    with pytest.raises(ValueError, match="ROADNOISE_CACHE = .*valid values are on/off, 1/0, true/false, yes/no"):
+        cache.cached("demo", {"x": 5.0}, lambda: 1)
+
+
+@pytest.mark.parametrize(("value", "on"), [("OFF", False), ("0", False), ("no", False), ("On", True), ("true", True)])
+def test_the_cache_setting_s_valid_values(monkeypatch, value, on):
+    monkeypatch.setenv("ROADNOISE_CACHE", value)
+    assert cache.cache_enabled() is on
+
+
+def test_a_stage_log_that_cannot_be_written_warns_once_and_keeps_every_result(cache_dir, monkeypatch, tmp_path):
+    monkeypatch.setenv("ROADNOISE_STAGE_LOG", str(tmp_path / "no such folder" / "stages.log"))
+    cache._warn_log_once.cache_clear()
+    with pytest.warns(RoadnoiseWarning, match="ROADNOISE_STAGE_LOG = .* cannot be written") as record:
+        values = [cache.cached("demo", {"x": float(k)}, lambda k=k: k) for k in range(3)]
+    assert values == [0, 1, 2] and len([w for w in record if "STAGE_LOG" in str(w.message)]) == 1

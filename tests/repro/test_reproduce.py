@@ -203,3 +203,13 @@ def test_chapters_start_longest_first_and_the_overview_last():
 def test_the_collection_gives_every_ready_notebook_its_cold_time():
     ready = [nb for nb in collection.notebooks() if nb["status"] == "ready"]
     assert all(float(nb["cold_seconds"]) > 0 for nb in ready)
+
+
+def test_a_figures_path_that_cannot_be_a_folder_is_refused_before_any_notebook_runs(tmp_path, monkeypatch, capsys):
+    blocker = tmp_path / "a file"
+    blocker.write_text("in the way")
+    monkeypatch.setattr(reproduce, "reproduce", lambda *a, **k: pytest.fail("a notebook ran"))
+    with pytest.raises(SystemExit):
+        reproduce.main(["--figures", str(blocker / "figures")])
+    assert "is a file, not a folder" in capsys.readouterr().err
+    assert reproduce.output_folder_problem(tmp_path / "new" / "figures") == ""

@@ -133,3 +133,12 @@ def test_bad_automatic_order_options(known_system):
         ru.fit_tasselli(BAND_FREQS, frf, n_poles="auto", target_error=-1)
     with pytest.raises(ValueError, match="max_poles = 1"):
         ru.fit_tasselli(BAND_FREQS, frf, n_poles="auto", max_poles=1)
+
+
+def test_a_band_beyond_the_frfs_is_fitted_as_far_as_they_go_with_a_warning(known_system):
+    from roadnoise_utils.guards import RoadnoiseWarning
+
+    _, _, frf = known_system(seed=2)
+    with pytest.warns(RoadnoiseWarning, match="f_max = 400 Hz is beyond the FRFs' last frequency 250 Hz"):
+        fits = ru.fit_tasselli(BAND_FREQS, frf[None, :], n_poles=8, f_max=400.0)
+    assert fits.band == (0.0, 250.0)
