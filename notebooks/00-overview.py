@@ -81,9 +81,7 @@ Markdown(ru.collection.markdown_table(link_prefix=""))
 
 # %%
 # The report: one row per claim, a value and a verdict per tire model
-claims = ru.claims.load_claims()
-if claim_ids is not None:
-    claims = [c for c in claims if c["id"] in claim_ids]
+claims = ru.claims.select_claims(claim_ids)  # a misspelt id is an error listing the valid ones
 report = ru.claims.report(claims=claims)
 report.drop(columns=[c for c in report.columns if c.startswith("deviation")])
 

@@ -69,9 +69,9 @@ n_workers = None
 # %%
 # NBVAL_CHECK_OUTPUT
 # The swept parameters of the tire file: value, unit and valid range
-parameters = ru.experiments.design.sweep_parameters(tire_name)
-print(parameters.loc[list(grid), ["value", "unit", "low", "high"]].to_string(float_format=lambda v: f"{v:.4g}"))
-print(f"{len(parameters)} parameters can be swept on this tire file")
+swept = ru.experiments.design.sweep_parameters(tire_name, grid)  # a misspelt name: an error listing the valid ones
+print(swept[["value", "unit", "low", "high"]].to_string(float_format=lambda v: f"{v:.4g}"))
+print(f"{len(ru.experiments.design.sweep_parameters(tire_name))} parameters can be swept on this tire file")
 
 # %%
 # NBVAL_CHECK_OUTPUT
@@ -119,7 +119,7 @@ for index, warned in table["warnings"].items():
 
 # %%
 # The tire file as it is (a design of the grid when its own values are on it)
-own = [parameters.loc[name, "value"] for name in grid]
+own = [swept.loc[name, "value"] for name in grid]
 on_grid = (table[table.attrs["parameters"]] == own).all(axis=1)
 baseline = table[on_grid].iloc[0] if on_grid.any() else None
 targets = ru.experiments.calibration.calibration_targets(tire_name)

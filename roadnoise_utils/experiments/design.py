@@ -158,14 +158,34 @@ def _fields(obj: Any, prefix: str) -> Iterable[tuple[str, Any, dict]]:
             yield name, value, f.metadata
 
 
-def sweep_parameters(tire: str | Spec = "165_65R14") -> pd.DataFrame:
-    """Every parameter a sweep can override on a tire file: value, unit, valid range, meaning.
+def sweep_parameters(tire: str | Spec = "165_65R14", names: Iterable[str] | None = None) -> pd.DataFrame:
+    """Every parameter a sweep can override on a tire file (or the ``names`` given): value, unit,
+    valid range, meaning.
 
     Index: the dotted names :func:`make_designs` accepts (the tire file's own keys, e.g.
     ``"operating.inflation_pressure"``), the same on a ring and a cross-section tire file where
-    the two share a table (``operating``, ``tasselli``, ``compounds``).
+    the two share a table (``operating``, ``tasselli``, ``compounds``). An unknown name among
+    ``names`` is an error listing the valid ones.
     """
     spec = stages.load_tire(tire)
+    table = _parameter_table(spec)
+    if names is None:
+        return table
+    names = list(names)
+    _check_names(spec, names, table)
+    return table.loc[names]
+
+
+def _check_names(spec: Spec, names: list[str], table: pd.DataFrame) -> None:
+    unknown = [name for name in names if name not in table.index]
+    if unknown:
+        raise ValueError(
+            f"unknown parameter(s) {unknown} for the {spec.model} tire {spec.name!r}; valid names are the tire "
+            f"file's keys: {list(table.index)} (ru.experiments.design.sweep_parameters(tire) lists them with ranges)"
+        )
+
+
+def _parameter_table(spec: Spec) -> pd.DataFrame:
     rows = {
         name: {
             "value": value,
@@ -253,13 +273,9 @@ def make_designs(
     rows = design_rows(parameters)
     if not rows or not rows[0]:
         raise ValueError("parameters: no design; give at least one parameter with at least one value")
-    table = sweep_parameters(spec)
-    unknown = [name for name in rows[0] if name not in table.index]
-    if unknown:
-        raise ValueError(
-            f"unknown parameter(s) {unknown} for the {spec.model} tire {spec.name!r}; valid names are the tire "
-            f"file's keys: {list(table.index)} (ru.experiments.design.sweep_parameters(tire) lists them with ranges)"
-        )
+    table = _parameter_table(spec)
+    _check_names(spec, list(rows[0]), table)
+    _warn_switched_off(spec, rows[0])
     designs = []
     for index, row in enumerate(rows):
         overrides = {}
@@ -276,7 +292,38 @@ def make_designs(
         except ValueError as exc:
             raise ValueError(f"{design.describe()}: {exc}") from exc
         designs.append(design)
+    _warn_duplicates(designs)
     return designs
+
+
+def _warn_switched_off(spec: Spec, names: Iterable[str]) -> None:
+    """Warn when a swept parameter belongs to a sub-model the tire file switches off (``enabled = false``):
+    it cannot change any output, so every design gives the same numbers."""
+    idle = []
+    for name in names:
+        section = getattr(spec, name.split(".")[0], None)
+        if getattr(section, "enabled", True) is False and not name.endswith(".enabled"):
+            idle.append(name)
+    if idle:
+        guards.warn(
+            f"{idle} belong to a sub-model the tire file switches off ([{idle[0].split('.')[0]}] enabled = false): "
+            "they cannot change any output; sweep 'enabled' too or switch it on in the tire file",
+            4,
+        )
+
+
+def _warn_duplicates(designs: list[Design]) -> None:
+    """Warn when two designs are the same tire (a grid axis listing a value twice): computed once, shown twice."""
+    first: dict[tuple, int] = {}
+    repeats = []
+    for design in designs:
+        key = tuple(sorted(design.overrides.items()))
+        if key in first:
+            repeats.append(f"design {design.index} = design {first[key]}")
+        else:
+            first[key] = design.index
+    if repeats:
+        guards.warn(f"{len(repeats)} design(s) repeat another ({', '.join(repeats[:5])}): a value listed twice?", 4)
 
 
 def check_outputs(outputs: str | Iterable[str]) -> tuple[str, ...]:

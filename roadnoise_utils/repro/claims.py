@@ -17,7 +17,7 @@ counts it apart from the paper's claims.
 from __future__ import annotations
 
 import os
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from pathlib import Path
 
 import numpy as np
@@ -37,6 +37,26 @@ def load_claims() -> list[dict]:
         if not any(t in c for t in tests):
             raise ValueError(f"claim {c.get('id')!r} has no test; give one of {tests}")
     return claims
+
+
+def select_claims(claim_ids: Iterable[str] | None = None) -> list[dict]:
+    """The claims with the ids ``claim_ids`` (every claim for ``None``), in the file's order.
+
+    A misspelt id is an error listing the valid ones (it was dropped without a word before);
+    so is a single string (a list of ids is expected).
+    """
+    claims = load_claims()
+    if claim_ids is None:
+        return claims
+    if isinstance(claim_ids, str) or not all(isinstance(i, str) for i in claim_ids):
+        raise ValueError(f"claim_ids = {claim_ids!r}: give a list of claim ids (str), or None for every claim")
+    known = [c["id"] for c in claims]
+    unknown = sorted(set(claim_ids) - set(known))
+    if unknown:
+        raise ValueError(f"claim_ids: unknown id(s) {unknown}; valid ids are {known}")
+    if not claim_ids:
+        raise ValueError("claim_ids is empty: give at least one claim id, or None for every claim")
+    return [c for c in claims if c["id"] in set(claim_ids)]
 
 
 def paper_value(claim_id: str, key: str = "paper") -> float:

@@ -246,6 +246,12 @@ def weights(freqs: np.ndarray, frf: np.ndarray, weight: np.ndarray | str) -> np.
         ) from None
     if np.any(w < 0) or not np.all(np.isfinite(w)):
         raise ValueError("weight must be finite, >= 0 and one per frequency")
+    empty = np.nonzero(~np.any(w.reshape(-1, w.shape[-1]) > 0, axis=-1))[0]
+    if empty.size:
+        raise ValueError(
+            f"weight is zero at every frequency of FRF row(s) {empty.tolist()[:10]}: a fit there is undetermined; "
+            "give a positive weight where the FRF should be matched"
+        )
     return w
 
 

@@ -45,3 +45,27 @@ def test_paper_defaults_of_the_top_level_entry_points(fet, drum):
     assert (ru.cleat_input(drum, 5.0).u == explicit.u).all()
     with pytest.raises(ValueError, match="drum_radius is required"):
         ru.tire.ring.static.solve_static(fet, road="drum")
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "message"),
+    [
+        ("\nheight =", "\nheigth =", r"cleat_test.toml: \[cleat\] has unknown key\(s\) \['heigth'\]"),
+        ("[cleat]", "[cleats]", r"cleat_test.toml: the file has unknown key\(s\) \['cleats'\]"),
+    ],
+)
+def test_a_misspelt_key_of_a_conditions_file_is_refused_naming_table_and_key(tmp_path, monkeypatch, old, new, message):
+    """A misspelt key was ignored before and the paper's value used in its place."""
+    import shutil
+
+    from roadnoise_utils.repro.paths import REPO_ROOT
+
+    data = tmp_path / "data"
+    shutil.copytree(REPO_ROOT / "data", data)
+    path = data / "conditions" / "cleat_test.toml"
+    text = path.read_text()
+    assert text.count(old) == 1
+    path.write_text(text.replace(old, new))
+    monkeypatch.setenv("ROADNOISE_DATA_DIR", str(data))
+    with pytest.raises(ValueError, match=message):
+        ru.experiments.cleat_conditions()

@@ -97,3 +97,30 @@ def test_a_designs_outputs_are_the_stages_values_and_pickle(tire):
     back = pickle.loads(pickle.dumps(result))
     assert back == result and all(isinstance(v, float) for v in back.values.values())
     assert np.isfinite(list(result.values.values())).all()
+
+
+def test_a_grid_listing_a_value_twice_warns_which_designs_repeat():
+    from roadnoise_utils.guards import RoadnoiseWarning
+
+    with pytest.warns(RoadnoiseWarning, match=r"1 design\(s\) repeat another \(design 2 = design 0\)"):
+        designs = ru.experiments.design.make_designs(
+            "165_65R14", {"operating.inflation_pressure": [2.3e5, 2.4e5, 2.3e5]}
+        )
+    assert len(designs) == 3
+
+
+def test_a_sweep_over_a_switched_off_sub_model_warns():
+    from roadnoise_utils.guards import RoadnoiseWarning
+
+    assert ru.load_tire("165_65R14").cavity.enabled is False
+    with pytest.warns(
+        RoadnoiseWarning, match=r"\['cavity.temperature'\] belong to a sub-model the tire file switches off"
+    ):
+        ru.experiments.design.make_designs("165_65R14", {"cavity.temperature": [10.0, 30.0]})
+
+
+def test_the_swept_parameters_of_a_grid_and_a_misspelt_name_among_them():
+    table = ru.experiments.design.sweep_parameters("165_65R14", ["operating.inflation_pressure"])
+    assert list(table.index) == ["operating.inflation_pressure"] and table.loc["operating.inflation_pressure", "unit"] == "Pa"
+    with pytest.raises(ValueError, match=r"unknown parameter\(s\) \['operating.inflation_presure'\]"):
+        ru.experiments.design.sweep_parameters("165_65R14", {"operating.inflation_presure": [2.3e5]})

@@ -85,3 +85,22 @@ def test_every_claim_has_an_evaluator_and_a_notebook():
     for c in claims.load_claims():
         assert c["id"] in claims.EVALUATORS, c["id"]
         assert c["notebook"] in ready, c["notebook"]
+
+
+@pytest.mark.parametrize(
+    ("ids", "message"),
+    [
+        (["fe_dof", "cleat_dynamik"], r"claim_ids: unknown id\(s\) \['cleat_dynamik'\]; valid ids are \["),
+        ("fe_dof", r"claim_ids = 'fe_dof': give a list of claim ids"),
+        ([], "claim_ids is empty"),
+    ],
+)
+def test_a_misspelt_or_malformed_claim_selection_is_refused(ids, message):
+    with pytest.raises(ValueError, match=message):
+        claims.select_claims(ids)
+
+
+def test_a_claim_selection_keeps_the_file_s_order():
+    every = [c["id"] for c in claims.load_claims()]
+    chosen = [c["id"] for c in claims.select_claims([every[3], every[0]])]
+    assert chosen == [every[0], every[3]] and len(claims.select_claims(None)) == len(every)

@@ -142,3 +142,11 @@ def test_a_band_beyond_the_frfs_is_fitted_as_far_as_they_go_with_a_warning(known
     with pytest.warns(RoadnoiseWarning, match="f_max = 400 Hz is beyond the FRFs' last frequency 250 Hz"):
         fits = ru.fit_tasselli(BAND_FREQS, frf[None, :], n_poles=8, f_max=400.0)
     assert fits.band == (0.0, 250.0)
+
+
+def test_a_weight_that_is_zero_everywhere_is_refused_naming_the_row(known_system):
+    _, _, frf = known_system(seed=3)
+    weight = np.ones((2, BAND_FREQS.size))
+    weight[1] = 0.0
+    with pytest.raises(ValueError, match=r"weight is zero at every frequency of FRF row\(s\) \[1\]"):
+        ru.fit_tasselli(BAND_FREQS, np.vstack([frf, frf]), n_poles=8, weight=weight)
