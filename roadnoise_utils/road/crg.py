@@ -27,6 +27,8 @@ with an empty modifier block, so any OpenCRG reader keeps the road where it is.
 
 from __future__ import annotations
 
+import contextlib
+from collections.abc import Iterator
 from pathlib import Path
 
 import numpy as np
@@ -84,7 +86,10 @@ def load_crg(path: str | Path, *, modifiers: str = "file", track: float = 0.0, h
     FileNotFoundError
         No such file.
     ValueError
-        An unknown ``modifiers``; a file OpenCRG cannot load or whose modifiers are invalid;
+        An unknown ``modifiers``; a file OpenCRG cannot load, fails OpenCRG's consistency check or
+        whose modifiers are invalid; a header line OpenCRG cannot parse, or a header that disagrees
+        with the data (:func:`check_consistency`: its reference line or long sections imply another
+        number of sections than the data holds, a zero increment, a data channel short);
         ``track`` outside the road or no long section within ``half_width``; NaN heights in the
         kept long sections; a step over 12.5 mm; heights beyond 0.25 m (a reference line at its
         geographic elevation, say).
@@ -94,14 +99,20 @@ def load_crg(path: str | Path, *, modifiers: str = "file", track: float = 0.0, h
         raise ValueError(f"modifiers = {modifiers!r}: valid values are {', '.join(map(repr, MODIFIER_CHOICES))}")
     half_width = guards.real("half_width", half_width, 0.0, MAX_LATERAL, lo_open=True, unit="m")
     track = guards.real("track", track, unit="m")
-    has_block = _header(path).modifiers is not None
-    apply = modifiers == "opencrg" or (modifiers == "file" and has_block)
-    try:
-        record_read(path)
-        with pycrg.DataSet.open(path, apply_modifiers=apply) as dataset:
-            grid = dataset.grid()
-    except (pycrg.OpenCRGError, ValueError) as exc:
-        raise ValueError(f"{path.name}: OpenCRG cannot load it ({exc})") from None
+    with _opencrg_messages() as messages:
+        header = _header(path)
+        has_block = header.modifiers is not None
+        apply = modifiers == "opencrg" or (modifiers == "file" and has_block)
+        try:
+            record_read(path)
+            with pycrg.DataSet.open(path, apply_modifiers=False, check=True) as dataset:
+                stored = dataset.grid()
+                if apply:
+                    dataset.modifiers_apply()
+                grid = dataset.grid()
+        except (pycrg.OpenCRGError, ValueError) as exc:
+            raise ValueError(f"{path.name}: OpenCRG cannot load it ({exc})") from None
+    check_consistency(path.name, header, messages, np.asarray(stored.u).size, np.asarray(stored.v).size)
     v = np.asarray(grid.v, float)
     if not v.min() <= track <= v.max():
         raise ValueError(f"track = {track:g} m: valid range is the road's width, [{v.min():g}, {v.max():g}] m")
@@ -180,6 +191,68 @@ def save_crg(path: str | Path, road: RoadProfile, *, fmt: str = "KDBI", overwrit
         except ValueError as exc:
             raise ValueError(f"road: OpenCRG refuses it ({exc})") from None
     return Path(path)
+
+
+@contextlib.contextmanager
+def _opencrg_messages() -> Iterator[list[str]]:
+    """The OpenCRG library's messages while the block runs, collected instead of printed."""
+    messages: list[str] = []
+    pycrg.set_message_callback(lambda level, text: messages.append(" ".join(str(text).split())))
+    try:
+        yield messages
+    finally:
+        pycrg.set_message_callback(None)
+
+
+def check_consistency(name: str, header: pycrg.CrgHeader, messages: list[str], n_u: int, n_v: int) -> None:
+    """Refuse an OpenCRG file whose header and data disagree, as the format defines them.
+
+    OpenCRG's own loader skips a header line it cannot parse (a misspelt or non-numeric
+    modifier) with a message, and reads as many cross sections and long sections as the data
+    holds; here each is an error naming the file and what was expected. ``n_u``, ``n_v``: the
+    cross and long sections of the data as stored (before modifiers).
+    """
+    ignored = [m for m in messages if "ignoring line" in m]
+    if ignored:
+        raise ValueError(f"{name}: a header line OpenCRG cannot parse ({ignored[0]}); fix or remove it")
+    road = header.road or {}
+    if not road:
+        raise ValueError(f"{name}: no $ROAD_CRG block (the reference line and the long sections' positions)")
+    for key in ("reference_line_increment", "long_section_v_increment"):
+        if key in road and not float(road[key]) > 0:
+            raise ValueError(f"{name}: $ROAD_CRG {key} = {road[key]}: valid range is > 0 m")
+    _check_count(
+        name,
+        road,
+        ("reference_line_start_u", "reference_line_end_u", "reference_line_increment"),
+        n_u,
+        "cross sections (u)",
+    )
+    _check_count(
+        name,
+        road,
+        ("long_section_v_right", "long_section_v_left", "long_section_v_increment"),
+        n_v,
+        "long sections (v)",
+    )
+    data_channels = sum(1 for channel in header.channels if channel.kind == "D")
+    if data_channels and data_channels != n_v:
+        raise ValueError(
+            f"{name}: {data_channels} data channels (D:) in $KD_DEFINITION, {n_v} long sections in the data"
+        )
+
+
+def _check_count(name: str, road: dict, keys: tuple[str, str, str], found: int, what: str) -> None:
+    """The number of sections a header's start, end and increment imply against the data's."""
+    if not set(keys) <= set(road):
+        return
+    start, end, step = (float(road[k]) for k in keys)
+    implied = (end - start) / step + 1.0
+    if abs(implied - round(implied)) > 1e-6 * max(implied, 1.0) or round(implied) != found:
+        raise ValueError(
+            f"{name}: the header's {keys[0]} .. {keys[1]} = {start:g} .. {end:g} m every {step:g} m make "
+            f"{implied:.6g} {what}; the data has {found} (a line missing or cut short, or a wrong header)"
+        )
 
 
 def _existing(path: str | Path) -> Path:

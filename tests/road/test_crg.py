@@ -159,3 +159,70 @@ def test_bad_crg_input_is_refused(tmp_path, field):
     with pytest.raises(ValueError, match="OpenCRG cannot load it"):
         ru.road.load_crg(tmp_path / "text.crg")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["border.crg", "coarse.crg", "road.crg", "text.crg"]
+
+
+def _ldfi_lines(
+    rows: np.ndarray, road: dict | None = None, mods: list[str] | None = None, channels: int = 3
+) -> list[str]:
+    """An LDFI file typed from the OpenCRG format: u from 2.0 m every 0.01 m, v = -0.05, 0, 0.05 m."""
+    header = {
+        "reference_line_start_u": 2.0,
+        "reference_line_end_u": 2.4,
+        "reference_line_increment": 0.01,
+        "long_section_v_right": -0.05,
+        "long_section_v_left": 0.05,
+        "long_section_v_increment": 0.05,
+        **(road or {}),
+    }
+    lines = ["$CT", "test road", "$", "$ROAD_CRG", *[f"{k} = {v}" for k, v in header.items()], "$"]
+    if mods is not None:
+        lines += ["$ROAD_CRG_MODS", *mods, "$"]
+    lines += ["$KD_DEFINITION", "#:LDFI", "U:reference line u,m,2.0,0.01"]
+    lines += [f"D:long section {k + 1},m" for k in range(channels)] + ["$", "$" * 72]
+    return lines + ["".join(f"{x:20.15f}" for x in row) for row in rows]
+
+
+ROWS = 0.002 * np.sin(np.linspace(0.0, 12.0, 41))[:, None] * np.ones(3)
+
+
+@pytest.mark.parametrize(
+    ("lines", "message"),
+    [
+        (
+            _ldfi_lines(ROWS, {"reference_line_end_u": 2.8}),
+            r"2 .. 2.8 m every 0.01 m make 81 cross sections \(u\); the data has 41",
+        ),
+        (
+            _ldfi_lines(ROWS)[:-1] + ["".join(f"{x:20.15f}" for x in ROWS[-1, :2])],
+            "make 41 cross sections .*the data has 40",
+        ),
+        (_ldfi_lines(ROWS, {"long_section_v_increment": 0.04}), r"make 3.5 long sections \(v\); the data has 3"),
+        (_ldfi_lines(ROWS, {"long_section_v_increment": 0.0}), "long_section_v_increment = 0.0: valid range is > 0 m"),
+        (_ldfi_lines(ROWS[:, :2], channels=2), r"make 3 long sections \(v\); the data has 2"),
+        (_ldfi_lines(ROWS, mods=["scale_z = abc"]), r"a header line OpenCRG cannot parse \(.*line 13"),
+        (_ldfi_lines(ROWS, mods=["scale_zz = 2.0"]), r"a header line OpenCRG cannot parse \(.*scale_zz"),
+    ],
+    ids=[
+        "end beyond the data",
+        "last line cut",
+        "v step",
+        "zero v step",
+        "a long section missing",
+        "bad value",
+        "bad name",
+    ],
+)
+def test_an_inconsistent_crg_file_is_refused_naming_what_was_expected(tmp_path, lines, message):
+    """OpenCRG's loader reads each of these (skipping the line it cannot parse, or as many sections as the
+    data holds) and gives a road; the header and the data must agree."""
+    path = tmp_path / "road.crg"
+    path.write_text("\n".join(lines) + "\n")
+    with pytest.raises(ValueError, match=f"road.crg: .*{message}"):
+        ru.road.load_crg(path)
+
+
+def test_the_consistent_hand_written_file_of_the_inconsistency_tests_loads(tmp_path):
+    path = tmp_path / "road.crg"
+    path.write_text("\n".join(_ldfi_lines(ROWS)) + "\n")
+    road = ru.road.load_crg(path)
+    assert road.z.shape == (3, 41) and np.allclose(road.z, ROWS.T, atol=1e-9)
