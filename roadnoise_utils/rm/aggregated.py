@@ -51,6 +51,7 @@ import scipy.fft as sfft
 
 from .. import guards
 from ..road.input import ROAD_GRID, profile_input, road_grid
+from ..tire.model import Footprint
 from .simulation import ModalSections, as_continuous_statespace, foh_coefficients, modal_sections, simulate
 
 #: The impulse responses are cut where the slowest mode has decayed to this fraction (-).
@@ -292,6 +293,10 @@ def road_hub_force(
     A model with blocks that have no modal form (:class:`.simulation.ExactBlock`: repeated poles)
     is simulated by :func:`.simulation.simulate` on :func:`.road.input.profile_input` instead.
     """
+    if not isinstance(static, Footprint):
+        raise TypeError(
+            f"static must be a Footprint (the loaded tire, e.g. stages.solve_static), got {type(static).__name__}"
+        )
     sections = system if isinstance(system, ModalSections) else modal_sections(as_continuous_statespace(system))
     n_tasselli = static.tasselli.n
     if sections.n_inputs != n_tasselli:

@@ -265,11 +265,28 @@ def conjugate_closed(zeros: np.ndarray) -> np.ndarray:
     return np.concatenate([real.astype(complex), np.ravel(np.column_stack([upper, upper.conj()]))])
 
 
+#: Largest FRF magnitude a fit accepts: the least-squares system squares it (1e150 squared is
+#: near the float range). Structural FRFs in SI units are below ~1e9 N/m.
+MAX_FRF = 1e150
+
+
 def as_arrays(freqs, frf) -> tuple[np.ndarray, np.ndarray]:
-    """Frequencies (float) and FRFs (complex) as arrays, or a ValueError naming the one that is not numeric."""
+    """Frequencies (float) and FRFs (complex) as arrays, or a ValueError naming the one that is not
+    numeric (rows of different lengths included), not finite or too large to fit."""
+    arrays = []
     for name, value, dtype in (("freqs", freqs, float), ("frf", frf, complex)):
         try:
-            np.asarray(value, dtype)
+            arrays.append(np.asarray(value, dtype))
         except (TypeError, ValueError):
-            raise ValueError(f"{name} must be numbers ({'real' if dtype is float else 'complex'})") from None
-    return np.asarray(freqs, float), np.asarray(frf, complex)
+            raise ValueError(
+                f"{name} must be numbers ({'real' if dtype is float else 'complex'}), every row as long as freqs"
+            ) from None
+    freqs, frf = arrays
+    if not np.all(np.isfinite(frf)):
+        raise ValueError("frf contains NaN or inf")
+    largest = float(np.abs(frf).max(initial=0.0))
+    if largest > MAX_FRF:
+        raise ValueError(
+            f"frf: values up to {largest:.3g}, valid range is |H| <= {MAX_FRF:g} (give the FRFs in SI units, e.g. N/m)"
+        )
+    return freqs, frf

@@ -121,6 +121,9 @@ def test_a_sweep_over_a_switched_off_sub_model_warns():
 
 def test_the_swept_parameters_of_a_grid_and_a_misspelt_name_among_them():
     table = ru.experiments.design.sweep_parameters("165_65R14", ["operating.inflation_pressure"])
-    assert list(table.index) == ["operating.inflation_pressure"] and table.loc["operating.inflation_pressure", "unit"] == "Pa"
+    assert (
+        list(table.index) == ["operating.inflation_pressure"]
+        and table.loc["operating.inflation_pressure", "unit"] == "Pa"
+    )
     with pytest.raises(ValueError, match=r"unknown parameter\(s\) \['operating.inflation_presure'\]"):
         ru.experiments.design.sweep_parameters("165_65R14", {"operating.inflation_presure": [2.3e5]})

@@ -124,3 +124,9 @@ def test_a_repeated_call_reuses_the_path_and_gives_the_same_force(tire):
     np.testing.assert_array_equal(first.force, again.force)
     aggregated.road_hub_force(sections, static, profile, 20.0, (0.0, 8.0), 9600.0)
     assert len(aggregated._PATHS) == 2
+
+
+def test_a_static_state_of_the_wrong_type_is_refused_naming_it(tire):
+    _, sections = tire
+    with pytest.raises(TypeError, match="static must be a Footprint .* got str"):
+        aggregated.road_hub_force(sections, "flat", lambda s: 0.0 * s, 30.0, (0.0, 1.0))
