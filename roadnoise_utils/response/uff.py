@@ -234,7 +234,15 @@ def read_uff58(path: str | Path) -> FRFResult:
             freqs, method = x, str(dset.get("id4", "")).strip()
         elif x.shape != freqs.shape or not np.array_equal(x, freqs):
             raise ValueError(f"{where}: its frequencies differ from the first set's; every FRF needs the same ones")
-        frfs[node] = np.asarray(dset["data"], complex) * factor
+        try:
+            values = np.asarray(dset["data"], complex)
+        except (TypeError, ValueError):
+            raise ValueError(f"{where}: its values are not numbers") from None
+        if values.shape != freqs.shape:
+            raise ValueError(f"{where}: {values.size} values for {freqs.size} frequencies (a set cut short?)")
+        if not np.all(np.isfinite(values)):
+            raise ValueError(f"{where}: NaN or infinite values")
+        frfs[node] = values * factor
     if freqs is None:
         raise ValueError(f"{path.name}: no UFF 58 data set")
     missing = [] if FOOTPRINT_NODE in frfs else ["H_tot"]

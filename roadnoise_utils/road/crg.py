@@ -219,7 +219,7 @@ def check_consistency(name: str, header: pycrg.CrgHeader, messages: list[str], n
     if not road:
         raise ValueError(f"{name}: no $ROAD_CRG block (the reference line and the long sections' positions)")
     for key in ("reference_line_increment", "long_section_v_increment"):
-        if key in road and not float(road[key]) > 0:
+        if key in road and not (isinstance(road[key], (int, float)) and road[key] > 0):
             raise ValueError(f"{name}: $ROAD_CRG {key} = {road[key]}: valid range is > 0 m")
     _check_count(
         name,
@@ -246,7 +246,12 @@ def _check_count(name: str, road: dict, keys: tuple[str, str, str], found: int, 
     """The number of sections a header's start, end and increment imply against the data's."""
     if not set(keys) <= set(road):
         return
-    start, end, step = (float(road[k]) for k in keys)
+    values = [road[k] for k in keys]
+    if not all(isinstance(v, (int, float)) and np.isfinite(v) for v in values):
+        raise ValueError(
+            f"{name}: $ROAD_CRG {', '.join(f'{k} = {v}' for k, v in zip(keys, values))}: each must be a finite number (m)"
+        )
+    start, end, step = (float(v) for v in values)
     implied = (end - start) / step + 1.0
     if abs(implied - round(implied)) > 1e-6 * max(implied, 1.0) or round(implied) != found:
         raise ValueError(

@@ -81,4 +81,7 @@ def check_road_grid(s: np.ndarray, y: np.ndarray, z: np.ndarray, source: str) ->
             f"{source}: heights up to {np.max(np.abs(z)):g} m: valid range is [-{MAX_HEIGHT:g}, {MAX_HEIGHT:g}] m "
             "(heights are in metres, not millimetres)"
         )
-    check_lateral_positions(y)
+    try:
+        check_lateral_positions(y)
+    except ValueError as exc:
+        raise ValueError(f"{source}: {exc}") from None

@@ -136,6 +136,8 @@ def load_texture(name: str | Path) -> RoadSpectrum:
             f"{path.name}: [spectrum] needs reference_psd (or iso_class), exponent, "
             f"texture_wavenumber, texture_exponent, min_wavelength, max_wavelength ({exc})"
         ) from exc
+    except ValueError as exc:  # a value out of its range: say which file it came from
+        raise ValueError(f"{path.name}: {exc}") from None
 
 
 def as_spectrum(spectrum: RoadSpectrum | str | Path) -> RoadSpectrum:
