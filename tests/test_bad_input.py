@@ -447,3 +447,9 @@ def test_chunked_checks_find_what_the_whole_array_check_finds():
     t[-1] += 1e-6
     with pytest.raises(ValueError, match="time step"):
         guards.uniform_step(t, chunk=100)
+
+
+def test_a_record_far_beyond_the_usual_is_announced_with_its_size(flat):
+    """1e-3 m/s over 3 m at 5 kHz is 1.5e7 samples (3000 s of record): it starts with its size named."""
+    with pytest.warns(RoadnoiseWarning, match=r"speed = 0.001 m/s .* is 1.5e\+07 samples \(3000 s of record\)"):
+        ru.road.input.road_grid(flat, lambda s: 0.0 * s, 1e-3, (0.0, 3.0), check_memory=lambda *args: None)

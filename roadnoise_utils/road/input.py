@@ -106,6 +106,11 @@ class RoadInput:
         )
 
 
+#: Samples of a road record beyond which a run is announced with its size (1000 s at 10 kHz: a
+#: hundred times the road test's record); larger inputs still meet the memory guard.
+LONG_RECORD = 10_000_000
+
+
 def sample_rate_for(speed: float, band: float = BAND) -> float:
     """Sample rate (Hz): at least ``SAMPLES_PER_PERIOD`` per period of ``band`` and a road
     step of at most :data:`MAX_ROAD_STEP`, rounded up to a whole multiple of 100 Hz (5 kHz up
@@ -231,6 +236,13 @@ def road_grid(
         _check_input_memory(static.tasselli, n, n_grid, step, oversample)
     else:
         check_memory(n, n_grid, step, dt)
+    if n > LONG_RECORD:
+        guards.warn(
+            f"speed = {speed:g} m/s over distance {d0:g} .. {d1:g} m at {fs:g} Hz is {n:.3g} samples "
+            f"({n * dt:.4g} s of record), beyond the usual <= {LONG_RECORD:.0e}: expect minutes "
+            "(a slow speed or a long road); shorten the distance or raise the speed if that is not meant",
+            4,
+        )
     t = dt * np.arange(n)
     parts, x0 = strip_kernels(static.tasselli, step)
     n_x = parts[0][2].shape[1]
