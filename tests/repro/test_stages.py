@@ -103,3 +103,29 @@ def test_the_stages_run_the_tire_model_its_file_names():
     with pytest.raises(ru.NotApplicable, match="not applicable: loaded_modes"):
         stages.loaded_modes(CROSS_SECTION)
     assert stages.tire_model(CROSS_SECTION).has("one_sided_cleat")  # stages.one_sided_run runs its stepping
+
+
+def test_editing_the_road_texture_or_the_vehicle_recomputes_a_cached_sweep(data_copy):
+    """A sweep's design is keyed by the names of the texture and the vehicle it reads; the entry records
+    the files' contents, so an edit of either recomputes it (it served the old number before)."""
+    coarse = ru.load_tire("165_65R14").replace(
+        **{"mesh.n_strips": 7, "mesh.n_elements": 260, "tasselli.strips_per_column": 1}
+    )
+
+    def hub_rms() -> float:
+        table = ru.experiments.sweep(
+            {"operating.inflation_pressure": [2.3e5]}, ["hub_acceleration"], tire=coarse, scheduler="serial",
+            progress=False,
+        )  # fmt: skip
+        return float(table["a_hub_rms (m/s^2)"].iloc[0])
+
+    class_c = hub_rms()
+    texture = data_copy / "roads" / "rough.toml"
+    texture.write_text(texture.read_text().replace('iso_class = "C"', 'iso_class = "E"'))
+    class_e, computed = _computed_during(hub_rms)
+    assert "evaluate_design" in computed
+    assert class_e / class_c == pytest.approx(4.0, rel=0.05)  # class E: 16 times class C's PSD, 4 times its RMS
+    vehicle = data_copy / "vehicles" / "midsize_195_65R15.toml"
+    vehicle.write_text(vehicle.read_text().replace("unsprung = 32.0", "unsprung = 64.0"))
+    heavier, computed = _computed_during(hub_rms)
+    assert "evaluate_design" in computed and heavier < 0.9 * class_e
