@@ -30,6 +30,7 @@ from __future__ import annotations
 import contextlib
 from collections.abc import Iterator
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 import pycrg
@@ -37,10 +38,10 @@ import pycrg
 from .. import guards
 from ..repro.paths import atomic_output, record_read
 from .files import check_road_grid
-from .textures import MAX_LATERAL, RoadProfile
+from .textures import MAX_HEIGHT, MAX_LATERAL, RoadProfile
 
 #: The choices of :func:`load_crg`'s ``modifiers``.
-MODIFIER_CHOICES = ("file", "none", "opencrg")
+MODIFIER_CHOICES = ("file", "none", "opencrg", "path")
 #: OpenCRG data formats :func:`save_crg` writes.
 CRG_FORMATS = ("KDBI", "KRBI", "LDFI", "LRFI")
 #: A road whose median height is further from zero than this (m) gets a warning (a static load).
@@ -61,11 +62,14 @@ def load_crg(path: str | Path, *, modifiers: str = "file", track: float = 0.0, h
     ----------
     path : str or Path
         The ``.crg`` file (any of the four formats).
-    modifiers : {"file", "none", "opencrg"}
+    modifiers : {"file", "none", "opencrg", "path"}
         ``"file"`` (default): the file's ``$ROAD_CRG_MODS`` block if it has one, nothing otherwise;
         ``"none"``: the data as stored, even if the file has a block; ``"opencrg"``: as the C loader
         does, the file's block or, without one, OpenCRG's defaults (the start of the reference
-        line moved to ``z = 0``: a shift by minus the road's height there).
+        line moved to ``z = 0``: a shift by minus the road's height there); ``"path"``: the
+        heights relative to the reference line, the wheel's path (its elevation, slope and
+        banking removed, :func:`_relative_to_path`): a surveyed road at its geographic elevation
+        read as the roughness the tire rolls over.
     track : float
         Lateral position ``v`` of the wheel's centre line on the road (m, positive to the left, as
         in OpenCRG); default the reference line.
@@ -110,6 +114,8 @@ def load_crg(path: str | Path, *, modifiers: str = "file", track: float = 0.0, h
                 if apply:
                     dataset.modifiers_apply()
                 grid = dataset.grid()
+            if modifiers == "path":
+                grid = _relative_to_path(path)
         except (pycrg.OpenCRGError, ValueError) as exc:
             raise ValueError(f"{path.name}: OpenCRG cannot load it ({exc})") from None
     check_consistency(path.name, header, messages, np.asarray(stored.u).size, np.asarray(stored.v).size)
@@ -132,6 +138,11 @@ def load_crg(path: str | Path, *, modifiers: str = "file", track: float = 0.0, h
             "$ROAD_CRG_MODS block with a GRID_NAN_MODE (applied with modifiers='file')"
         )
     s = np.asarray(grid.u, float)
+    if modifiers != "path" and np.nanmax(np.abs(z)) > MAX_HEIGHT:
+        raise ValueError(
+            f"{path.name}: heights up to {np.nanmax(np.abs(z)):.4g} m with modifiers = {modifiers!r}: a road at its "
+            "geographic elevation? modifiers='path' reads it relative to its reference line (the wheel's path)"
+        )
     check_road_grid(s, y, z, path.name)
     median = float(np.median(z))
     if abs(median) > STATIC_OFFSET_WARNING:
@@ -258,6 +269,29 @@ def _check_count(name: str, road: dict, keys: tuple[str, str, str], found: int, 
             f"{name}: the header's {keys[0]} .. {keys[1]} = {start:g} .. {end:g} m every {step:g} m make "
             f"{implied:.6g} {what}; the data has {found} (a line missing or cut short, or a wrong header)"
         )
+
+
+def _relative_to_path(path: Path) -> SimpleNamespace:
+    """The stored grid relative to its reference surface: the reference line's elevation (its slope
+    integrated) and banking removed, the roughness kept.
+
+    OpenCRG's own modifier ``scale_z`` scales the grid's values and leaves the reference surface:
+    the grid evaluated with ``scale_z = 1`` minus the grid with ``scale_z = 0`` is the roughness
+    alone (to the single precision the library stores it in), whatever the road's geographic
+    elevation, slope or banking, and whatever modifiers the file's block or OpenCRG's defaults add
+    to both evaluations alike.
+    """
+    elevations = []
+    for scale in (1.0, 0.0):
+        with pycrg.DataSet.open(path, apply_modifiers=False) as dataset:
+            dataset.modifier_remove_all()
+            dataset.modifier_set_double(pycrg.MOD_SCALE_Z, scale)
+            dataset.modifiers_apply()
+            grid = dataset.grid()
+            elevations.append(np.asarray(grid.elevation, float))
+    return SimpleNamespace(
+        u=np.asarray(grid.u, float), v=np.asarray(grid.v, float), elevation=elevations[0] - elevations[1]
+    )
 
 
 def _existing(path: str | Path) -> Path:

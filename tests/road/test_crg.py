@@ -226,3 +226,21 @@ def test_the_consistent_hand_written_file_of_the_inconsistency_tests_loads(tmp_p
     path.write_text("\n".join(_ldfi_lines(ROWS)) + "\n")
     road = ru.road.load_crg(path)
     assert road.z.shape == (3, 41) and np.allclose(road.z, ROWS.T, atol=1e-9)
+
+
+@pytest.mark.parametrize("mods", [None, {}], ids=["no modifier block", "an empty block"])
+def test_a_road_at_its_geographic_elevation_is_read_relative_to_the_wheel_s_path(tmp_path, mods):
+    """A surveyed road 350 m up, on a 2 % grade and a 1 % bank: refused as it is (with the way to read
+    it), read with modifiers='path' as its roughness, to the library's single precision."""
+    u = np.arange(400) * 0.005
+    v = np.array([-0.1, 0.0, 0.1])
+    roughness = 1e-3 * np.random.default_rng(5).standard_normal((u.size, v.size))
+    path = tmp_path / "surveyed.crg"
+    pycrg.write(path, roughness, 0.005, v, z0=350.0, slope=0.02, banking=0.01, fmt="KDBI", mods=mods)
+    with pytest.raises(
+        ValueError, match=r"heights up to 350 m .*modifiers='path' reads it relative to its reference line"
+    ):
+        ru.road.load_crg(path, modifiers="none", half_width=0.1)
+    road = ru.road.load_crg(path, modifiers="path", half_width=0.1)
+    np.testing.assert_array_equal(road.y, v)
+    assert np.abs(road.z - roughness.T).max() <= 2 * FLOAT32 * np.abs(roughness).max()
