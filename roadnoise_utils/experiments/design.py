@@ -171,7 +171,11 @@ def sweep_parameters(tire: str | Spec = "165_65R14", names: Iterable[str] | None
     table = _parameter_table(spec)
     if names is None:
         return table
+    if isinstance(names, str):
+        raise ValueError(f"names = {names!r}: give a list of parameter names (a grid's keys), or None for all")
     names = list(names)
+    if not names:
+        raise ValueError("names is empty: give at least one parameter name, or None for all")
     _check_names(spec, names, table)
     return table.loc[names]
 
@@ -302,12 +306,12 @@ def _warn_switched_off(spec: Spec, names: Iterable[str]) -> None:
     idle = []
     for name in names:
         section = getattr(spec, name.split(".")[0], None)
-        if getattr(section, "enabled", True) is False and not name.endswith(".enabled"):
+        if getattr(section, "enabled", True) is False:
             idle.append(name)
     if idle:
         guards.warn(
             f"{idle} belong to a sub-model the tire file switches off ([{idle[0].split('.')[0]}] enabled = false): "
-            "they cannot change any output; sweep 'enabled' too or switch it on in the tire file",
+            "they cannot change any output; switch it on in the tire file to sweep them",
             4,
         )
 

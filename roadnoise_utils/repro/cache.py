@@ -23,8 +23,9 @@ cached stage function (:mod:`~roadnoise_utils.repro.stages`), which computes the
   computed for; a truncated, corrupted or unreadable file, or one holding another key's entry
   (a file renamed or copied by hand), is discarded with a warning and the stage recomputed.
 * **The same bits wherever it runs**: a stage computes with the BLAS/LAPACK pools held to one
-  thread (threadpoolctl), as in a dask worker or a reproduction kernel, so a result does not
-  depend on which process computed it first (two threads sum in another order: 1-2 ulp).
+  thread (threadpoolctl; set by the first stage of a process and kept), as in a dask worker or
+  a reproduction kernel, so a result does not depend on which process computed it first (two
+  threads sum in another order: 1-2 ulp).
 * **Never in the way**: a cache folder that cannot be written (read-only, a full disk, a path
   that is a file) gives a warning and the computed result.
 * **Trust**: entries are pickles. The digest detects a truncated or corrupted file, not a
@@ -325,10 +326,9 @@ def cache_enabled() -> bool:
     return flag_setting("ROADNOISE_CACHE", True)
 
 
-#: Stages computing in this process, the lock of that count and the BLAS limit they hold.
+#: Stages computing in this process, and the lock of that count.
 _depth = 0
 _depth_lock = threading.Lock()
-_limit = None
 
 
 @functools.cache
@@ -338,21 +338,21 @@ def _blas() -> ThreadpoolController:
 
 @contextlib.contextmanager
 def one_blas_thread() -> Iterator[None]:
-    """BLAS/LAPACK held to one thread while any stage computes in this process (re-entrant and
-    thread-safe: set when the first stage starts, lifted when the last one ends)."""
-    global _depth, _limit
+    """BLAS/LAPACK on one thread while a stage computes: set as a stage starts with none running,
+    and not lifted after. threadpoolctl's control of OpenBLAS belongs to the thread that first set
+    a limit; a limit lifted by one thread while another still computes a stage (or set by a thread
+    that does not own it) would let a stage compute on two threads, in another summation order.
+    The reproduction's kernels, the test workers and dask's workers run on one thread anyway."""
+    global _depth
     with _depth_lock:
         if _depth == 0:
-            _limit = _blas().limit(limits=1)
+            _blas().limit(limits=1)
         _depth += 1
     try:
         yield
     finally:
         with _depth_lock:
             _depth -= 1
-            if _depth == 0:
-                _limit.restore_original_limits()
-                _limit = None
 
 
 def _timed(name: str, compute: Callable[[], T], key: str = "-") -> T:
@@ -371,7 +371,7 @@ def _log_line(name: str, seconds: float, key: str) -> None:
     A diagnostic never fails a computation: a log that cannot be written is reported once per
     process and file (a warning) and the stage's result is kept.
     """
-    if not os.environ.get("ROADNOISE_STAGE_LOG"):
+    if not os.environ.get("ROADNOISE_STAGE_LOG", "").strip():  # unset or blank: no log
         return
     log = path_setting("ROADNOISE_STAGE_LOG", Path())
     try:

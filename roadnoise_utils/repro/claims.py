@@ -48,7 +48,10 @@ def select_claims(claim_ids: Iterable[str] | None = None) -> list[dict]:
     claims = load_claims()
     if claim_ids is None:
         return claims
-    if isinstance(claim_ids, str) or not all(isinstance(i, str) for i in claim_ids):
+    if isinstance(claim_ids, str):
+        raise ValueError(f"claim_ids = {claim_ids!r}: give a list of claim ids (str), or None for every claim")
+    claim_ids = list(claim_ids)  # a generator is read once
+    if not all(isinstance(i, str) for i in claim_ids):
         raise ValueError(f"claim_ids = {claim_ids!r}: give a list of claim ids (str), or None for every claim")
     known = [c["id"] for c in claims]
     unknown = sorted(set(claim_ids) - set(known))

@@ -28,6 +28,7 @@ with an empty modifier block, so any OpenCRG reader keeps the road where it is.
 from __future__ import annotations
 
 import contextlib
+import threading
 from collections.abc import Iterator
 from pathlib import Path
 from types import SimpleNamespace
@@ -40,6 +41,8 @@ from ..repro.paths import atomic_output, record_read
 from .files import check_road_grid
 from .textures import MAX_HEIGHT, MAX_LATERAL, RoadProfile
 
+#: Serialises the message callback where pycrg has no thread-local capture.
+_MESSAGES_LOCK = threading.Lock()
 #: The choices of :func:`load_crg`'s ``modifiers``.
 MODIFIER_CHOICES = ("file", "none", "opencrg", "path")
 #: OpenCRG data formats :func:`save_crg` writes.
@@ -206,13 +209,26 @@ def save_crg(path: str | Path, road: RoadProfile, *, fmt: str = "KDBI", overwrit
 
 @contextlib.contextmanager
 def _opencrg_messages() -> Iterator[list[str]]:
-    """The OpenCRG library's messages while the block runs, collected instead of printed."""
+    """The OpenCRG library's messages emitted on this thread while the block runs, collected and not
+    printed. pycrg's thread-local capture sees every message, whatever limit a file's ``warn_msgs``
+    option or an earlier file set, and leaves a user's own message callback alone; without it (an
+    older pycrg), the public callback under a lock, the limit lifted."""
     messages: list[str] = []
-    pycrg.set_message_callback(lambda level, text: messages.append(" ".join(str(text).split())))
-    try:
-        yield messages
-    finally:
-        pycrg.set_message_callback(None)
+    capture = getattr(getattr(pycrg, "_messages", None), "capture", None)
+    if capture is not None:
+        with capture(exclusive=True) as got:
+            try:
+                yield messages
+            finally:
+                messages.extend(" ".join(str(text).split()) for _, text in got)
+        return
+    with _MESSAGES_LOCK:  # pragma: no cover - older pycrg
+        pycrg.set_max_warn_messages(-1)
+        pycrg.set_message_callback(lambda level, text: messages.append(" ".join(str(text).split())))
+        try:
+            yield messages
+        finally:
+            pycrg.set_message_callback(None)
 
 
 def check_consistency(name: str, header: pycrg.CrgHeader, messages: list[str], n_u: int, n_v: int) -> None:
@@ -278,9 +294,10 @@ def _relative_to_path(path: Path) -> SimpleNamespace:
     OpenCRG's own modifier ``scale_z`` scales the grid's values and leaves the reference surface:
     the grid evaluated with ``scale_z = 1`` minus the grid with ``scale_z = 0`` is the roughness
     alone (to the single precision the library stores it in), whatever the road's geographic
-    elevation, slope or banking, and whatever modifiers the file's block or OpenCRG's defaults add
-    to both evaluations alike.
+    elevation, slope or banking. The file's own modifier block is not applied (both evaluations
+    replace it by that one modifier): a grid scaling or NaN mode in it is for the other choices.
     """
+    record_read(path)
     elevations = []
     for scale in (1.0, 0.0):
         with pycrg.DataSet.open(path, apply_modifiers=False) as dataset:

@@ -104,3 +104,9 @@ def test_a_claim_selection_keeps_the_file_s_order():
     every = [c["id"] for c in claims.load_claims()]
     chosen = [c["id"] for c in claims.select_claims([every[3], every[0]])]
     assert chosen == [every[0], every[3]] and len(claims.select_claims(None)) == len(every)
+
+
+def test_a_generator_of_claim_ids_is_read_once_and_checked():
+    assert [c["id"] for c in claims.select_claims(i for i in ["fe_dof"])] == ["fe_dof"]
+    with pytest.raises(ValueError, match=r"unknown id\(s\) \['nonexistent'\]"):
+        claims.select_claims(i for i in ["nonexistent"])

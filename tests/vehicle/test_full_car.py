@@ -149,3 +149,18 @@ def test_bad_vehicle_and_road_input_is_refused(car, car_tire, tmp_path):
     short = dataclasses.replace(field, periodic=False)
     with pytest.raises(ValueError, match="wheelbase"):
         two_track.wheel_inputs(static, short, car.positions, 20.0, (0.0, 58.0))
+
+
+def test_the_car_s_state_matrix_is_simulated_as_modal_sections(car_model):
+    """In physical units its eigenvectors have a condition number of 6.8e5 (set by the units, not by a
+    repeated pole); balanced, 1.6e5: below the limit, so the car keeps the fast modal path."""
+    import scipy.linalg as sla
+
+    from roadnoise_utils.rm import simulation
+
+    model = car_model[0]
+    a = np.asarray(model.A, float)
+    assert simulation.well_conditioned(a)
+    _, raw = np.linalg.eig(a)
+    _, balanced = np.linalg.eig(sla.matrix_balance(a, permute=False)[0])
+    assert np.linalg.cond(raw) > simulation.CONDITION_LIMIT > np.linalg.cond(balanced)
