@@ -83,6 +83,8 @@ class ExactBlock:
     def output(self, u: np.ndarray, dt: float) -> np.ndarray:
         """Outputs (n_outputs, n_samples) for inputs ``u`` (n_inputs, n_samples) from rest, FOH, step ``dt``."""
         m = self.a.shape[0]
+        # the drive, its Schur form and the states are held whole (complex: 16 bytes a value)
+        guards.check_memory(56.0 * m * u.shape[1], f"the exact simulation of a {m}-state block", "the inputs' length")
         v = self.b @ u  # the block's drive, piecewise linear as u
         augmented = np.zeros((3 * m, 3 * m))
         augmented[:m, :m], augmented[:m, m : 2 * m], augmented[m : 2 * m, 2 * m :] = (

@@ -220,3 +220,12 @@ def test_the_aggregated_road_path_gives_a_defective_tire_s_exact_force():
     reference = control.forced_response(system, T=road.t - road.t[0], U=road.u).outputs
     np.testing.assert_array_equal(result.t, road.t)
     assert np.abs(result.force - reference).max() < TOLERANCE * np.abs(reference).max()
+
+
+def test_an_exact_block_too_long_for_memory_is_refused_before_allocating(monkeypatch):
+    from roadnoise_utils.guards import ResourceLimitError
+
+    monkeypatch.setenv("ROADNOISE_MAX_BYTES", "1e6")
+    block = simulation.ExactBlock.balanced(_jordan(-300.0, 3), np.ones((3, 1)), np.ones((1, 3)))
+    with pytest.raises(ResourceLimitError, match="the inputs' length: the exact simulation of a 3-state block"):
+        block.output(np.zeros((1, 10_000)), DT)
