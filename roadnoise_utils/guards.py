@@ -98,6 +98,14 @@ def integer(name: str, value: object, lo: int = 0, hi: float = math.inf) -> int:
     return int(value)
 
 
+def flag(name: str, value: object) -> bool:
+    """``value`` if it is a boolean (Python or numpy), else ``ValueError`` naming ``name``: a string such as
+    ``"no"`` or a number is not taken for a flag (``bool("no")`` is True)."""
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    raise ValueError(f"{name} = {value!r} must be True or False")
+
+
 def interval(name: str, value: object, unit: str = "m") -> tuple[float, float]:
     """A pair ``(start, end)`` of finite numbers, the end beyond the start (a travel range, say)."""
     if isinstance(value, (str, bytes)) or not hasattr(value, "__len__") or len(value) != 2:

@@ -83,9 +83,8 @@ def test_simulate_refuses_discrete_models_and_converts_transfer_functions():
     assert np.allclose(ru.simulate(tf, road).force, ru.simulate(control.ss(tf), road).force, rtol=0, atol=1e-12)
     with pytest.raises(ValueError, match="dt = 0.0002: simulate needs a continuous-time model"):
         ru.simulate(control.c2d(control.ss(tf), 2e-4), road)
-    flat_u = ru.RoadInput(t=t, distance=t, u=np.ones(t.size), speed=1.0, description="1-D")
-    with pytest.raises(ValueError, match="inputs must be 2-D, one row per model input"):
-        ru.simulate(tf, flat_u)
+    with pytest.raises(ValueError, match=r"u must be \(n_tasselli, n_samples\) = \(\., 200\), got shape \(200,\)"):
+        ru.RoadInput(t=t, distance=t, u=np.ones(t.size), speed=1.0, description="1-D")  # refused when made
     with pytest.raises(ValueError, match="system must be a python-control StateSpace or TransferFunction"):
         ru.simulate("tire", road)
 
@@ -390,7 +389,7 @@ def test_an_unstable_model_is_flagged():
     [
         ({"H": np.ones((2, 3, 100))}, r"H must be 1-D or 2-D"),
         ({"weight": np.ones(7)}, "one weight per frequency"),
-        ({"H": ["x"] * 100}, "frf must be numbers"),
+        ({"H": ["x"] * 100}, "H must be numbers"),
     ],
 )
 def test_bad_fitting_shapes(kwargs, message):

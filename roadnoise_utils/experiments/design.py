@@ -254,6 +254,14 @@ def design_rows(parameters: Mapping[str, Sequence[float]] | pd.DataFrame | Seque
             if not values:
                 raise ValueError(f"parameters[{name!r}] is empty: give at least one value")
         return [dict(zip(names, combo)) for combo in itertools.product(*grids)]
+    if (
+        isinstance(parameters, (str, bytes))
+        or not isinstance(parameters, Iterable)
+        or not all(isinstance(row, Mapping) for row in parameters)
+    ):
+        raise ValueError(
+            f"parameters = {parameters!r}: give a mapping of value lists (a grid), a DataFrame or a list of mappings"
+        )
     rows = [{k: _plain(v) for k, v in dict(row).items()} for row in parameters]
     if not all(set(row) == set(rows[0]) for row in rows):
         raise ValueError("parameters: every design of a list must set the same parameters")

@@ -265,6 +265,8 @@ def sweep(
         Designs failed (``errors="raise"``); the others are in its ``table`` and in the cache.
     """
     start = time.perf_counter()
+    guards.flag("progress", progress)
+    guards.flag("cache", cache)
     spec = stages.load_tire(tire)
     outputs = check_outputs(outputs)
     if errors not in ERROR_MODES:

@@ -82,6 +82,8 @@ def one_sided_conditions(
     speeds = tuple(
         guards.real("sweep_kmh", v, 0.0, 360.0, lo_open=True, unit="km/h") for v in np.atleast_1d(given["sweep_kmh"])
     )
+    if not speeds:
+        raise ValueError("sweep_kmh = (): give at least one speed (km/h), e.g. (30.0, 60.0)")
     return OneSidedConditions(
         cleat=cleat_conditions() if cleat is None else cleat,
         n_elements=guards.integer("n_elements", given["n_elements"], 100, MAX_ELEMENTS),
@@ -317,6 +319,7 @@ def frozen_check(
     footprint FRFs of the cross-section) sees the same hat-averaged heights under every contact
     point; both are band-limited the same way.
     """
+    duration = guards.real("duration", duration, 0.0, 60.0, lo_open=True, unit="s")
     test = one_sided_conditions() if conditions is None else conditions
     c = test.cleat
     model = tire_model(tire)

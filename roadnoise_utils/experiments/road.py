@@ -75,6 +75,11 @@ def road_test_conditions(
         raise ValueError(f"textures = {names!r}: give a non-empty list of texture names, e.g. ['rough']")
     if not all(isinstance(n, str) for n in names):
         raise ValueError(f"textures = {names!r}: every texture is a name in data/roads or a path")
+    for name in names:  # a misspelt texture is named here, not when the road is generated
+        try:
+            load_texture(name)
+        except (ValueError, FileNotFoundError) as error:
+            raise ValueError(f"textures = {names!r}: {error}") from None
     return RoadTestConditions(
         speed_kmh=guards.real("speed_kmh", values["speed_kmh"], 0.0, 360.0, lo_open=True, unit="km/h"),
         textures=tuple(names),

@@ -55,6 +55,7 @@ import pandas as pd
 from scipy.interpolate import PchipInterpolator
 from scipy.optimize import least_squares
 
+from .. import guards
 from ..analysis import resonance_peaks
 from ..tire.model import FRFResult
 
@@ -159,12 +160,16 @@ def identify_modes(
     min_ratio : float
         A peak counts as a mode when ``|frf|`` there exceeds ``min_ratio * |frf(f_0)|``.
     """
+    f_max = guards.real("f_max", f_max, 0.0, lo_open=True, unit="Hz")
+    min_ratio = guards.real("min_ratio", min_ratio, 0.0, lo_open=True)
     freqs = np.asarray(freqs, float)
     frf = np.asarray(frf, complex)
     if freqs.shape != frf.shape or freqs.ndim != 1:
-        raise ValueError("freqs and frf must be 1-D arrays of the same length")
-    if not np.all(np.isfinite(frf)) or not np.all(np.diff(freqs) > 0):
-        raise ValueError("frf must be finite and freqs strictly increasing")
+        raise ValueError(f"freqs {freqs.shape} and frf {frf.shape} must be 1-D arrays of the same length")
+    if not np.all(np.isfinite(frf)):
+        raise ValueError("frf contains NaN or inf")
+    if not np.all(np.diff(freqs) > 0):
+        raise ValueError("freqs must be strictly increasing")
     peaks, _ = resonance_peaks(freqs, frf, min_ratio)
     peaks = peaks[peaks <= f_max]
     if peaks.size == 0:

@@ -116,6 +116,8 @@ def write_uff58(
     """
     if not isinstance(frfs, FRFResult):
         raise TypeError(f"frfs must be an FRFResult (TireModel.fixed_hub_frfs), got {type(frfs).__name__}")
+    for name, value in (("binary", binary), ("overwrite", overwrite), ("points", points)):
+        guards.flag(name, value)
     freqs, rows = _checked_rows(frfs, points)
     spacing, stored = _abscissa(freqs, binary)
     if not binary and spacing == 0:

@@ -334,6 +334,7 @@ def vector_fit(
         Impose ``G(0) = frf(0)`` exactly when ``freqs[0] == 0`` (the static influence).
     """
     freqs, frf = as_arrays(freqs, frf)
+    guards.flag("enforce_dc", enforce_dc)
     if frf.ndim != 1:
         raise ValueError(f"frf must be 1-D (one FRF; fit_tasselli fits one per row), got shape {frf.shape}")
     return _fit_many(freqs, frf[None, :], n_poles, weight, iterations, tolerance, enforce_dc)[0]
@@ -383,12 +384,14 @@ def fit_tasselli(
     max_poles : int
         Largest order ``n_poles="auto"`` tries (default :data:`AUTO_MAX_POLES`).
     """
-    freqs, H = as_arrays(freqs, H)
+    freqs, H = as_arrays(freqs, H, "H")
+    guards.flag("enforce_dc", enforce_dc)
+    guards.flag("common_poles", common_poles)
     H = np.atleast_2d(H)
     if H.ndim != 2:
         raise ValueError(f"H must be 1-D or 2-D [fit, frequency], got shape {H.shape}")
     if freqs.ndim != 1 or H.shape[-1] != freqs.size:
-        raise ValueError(f"H must have the frequencies on its last axis ({freqs.size}), got shape {H.shape}")
+        raise ValueError(f"H must have the frequencies (freqs, {freqs.size}) on its last axis, got shape {H.shape}")
     if not np.all(np.isfinite(freqs)):
         raise ValueError("freqs must be finite (a NaN frequency is not dropped silently)")
     orders, target = _orders(n_poles, target_error, max_poles)

@@ -37,6 +37,10 @@ from .fitting import FitSet, RationalFit
 
 def realize(fit: RationalFit) -> control.StateSpace:
     """Real block-diagonal state space of one fitted transfer function (paper Eq. 2)."""
+    if not isinstance(fit, RationalFit):
+        raise TypeError(
+            f"fit must be a RationalFit (ru.vector_fit, or one of ru.fit_tasselli's), got {type(fit).__name__}"
+        )
     a, b, c = real_blocks(fit)
     return control.ss(a, b[:, None], c[None, :], np.array([[fit.direct]]))
 

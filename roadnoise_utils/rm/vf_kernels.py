@@ -15,7 +15,10 @@ import numpy as np
 
 def check_data(freqs: np.ndarray, frf: np.ndarray, n_poles: int) -> None:
     if freqs.ndim != 1 or frf.shape[-1] != freqs.size:
-        raise ValueError(f"frf must have the frequencies on its last axis ({freqs.size}), got shape {frf.shape}")
+        raise ValueError(
+            f"freqs ({freqs.size} values) and frf (shape {frf.shape}) disagree: frf must have one value per "
+            "frequency on its last axis"
+        )
     if not np.all(np.isfinite(freqs)) or np.any(freqs < 0):
         raise ValueError("freqs must be finite and >= 0 Hz")
     if not np.all(np.diff(freqs) > 0):
@@ -270,11 +273,12 @@ def conjugate_closed(zeros: np.ndarray) -> np.ndarray:
 MAX_FRF = 1e150
 
 
-def as_arrays(freqs, frf) -> tuple[np.ndarray, np.ndarray]:
-    """Frequencies (float) and FRFs (complex) as arrays, or a ValueError naming the one that is not
-    numeric (rows of different lengths included), not finite or too large to fit."""
+def as_arrays(freqs, frf, frf_name: str = "frf") -> tuple[np.ndarray, np.ndarray]:
+    """Frequencies (float) and FRFs (complex) as arrays, or a ValueError naming the one (the FRFs as
+    ``frf_name``) that is not numeric (rows of different lengths included), empty, not finite or too
+    large to fit."""
     arrays = []
-    for name, value, dtype in (("freqs", freqs, float), ("frf", frf, complex)):
+    for name, value, dtype in (("freqs", freqs, float), (frf_name, frf, complex)):
         try:
             arrays.append(np.asarray(value, dtype))
         except (TypeError, ValueError):
@@ -282,11 +286,13 @@ def as_arrays(freqs, frf) -> tuple[np.ndarray, np.ndarray]:
                 f"{name} must be numbers ({'real' if dtype is float else 'complex'}), every row as long as freqs"
             ) from None
     freqs, frf = arrays
+    if frf.size == 0 or freqs.size == 0:
+        raise ValueError(f"freqs (shape {freqs.shape}) and {frf_name} (shape {frf.shape}) must not be empty")
     if not np.all(np.isfinite(frf)):
-        raise ValueError("frf contains NaN or inf")
+        raise ValueError(f"{frf_name} contains NaN or inf")
     largest = float(np.abs(frf).max(initial=0.0))
     if largest > MAX_FRF:
         raise ValueError(
-            f"frf: values up to {largest:.3g}, valid range is |H| <= {MAX_FRF:g} (give the FRFs in SI units, e.g. N/m)"
+            f"{frf_name}: values up to {largest:.3g}, valid range is |H| <= {MAX_FRF:g} (give the FRFs in SI units, e.g. N/m)"
         )
     return freqs, frf

@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from .. import guards
 from ..tire.model import Footprint
-from .input import RoadInput, profile_input
+from .input import MAX_SPEED, RoadInput, profile_input
 
 
 def cleat_profile(height: float, base: float, shape: str = "triangle"):
@@ -13,12 +14,8 @@ def cleat_profile(height: float, base: float, shape: str = "triangle"):
 
     Shapes: ``"triangle"`` (paper), ``"rectangle"``, ``"half-sine"``.
     """
-    if not (np.isfinite(height) and height > 0):
-        raise ValueError(f"cleat height = {height} m: valid range is (0, 0.1] m")
-    if height > 0.1:
-        raise ValueError(f"cleat height = {height} m: valid range is (0, 0.1] m")
-    if not (np.isfinite(base) and 0 < base <= 0.5):
-        raise ValueError(f"cleat base = {base} m: valid range is (0, 0.5] m")
+    height = guards.real("cleat height", height, 0.0, 0.1, lo_open=True, unit="m")
+    base = guards.real("cleat base", base, 0.0, 0.5, lo_open=True, unit="m")
     if shape not in ("triangle", "rectangle", "half-sine"):
         raise ValueError(f"cleat shape = {shape!r}: valid values are 'triangle', 'rectangle', 'half-sine'")
 
@@ -69,6 +66,7 @@ def cleat_input(
     The drum's curvature is in the static footprint; the cleat height is added normal to the
     drum surface (vertical to within 0.1 % over the footprint of a 1.25 m drum).
     """
+    speed = guards.real("speed", speed, 0.0, MAX_SPEED, lo_open=True, unit="m/s")
     return profile_input(
         static,
         cleat_profile(height, base, shape),

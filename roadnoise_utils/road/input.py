@@ -72,6 +72,20 @@ class RoadInput:
     speed: float
     description: str
 
+    def __post_init__(self):
+        """Shapes, types and the speed checked when the input is made (no pass over the samples:
+        :func:`roadnoise_utils.rm.simulate` checks the values are finite, in chunks)."""
+        guards.real("speed", self.speed, 0.0, MAX_SPEED, lo_open=True, unit="m/s")
+        for name in ("t", "distance", "u"):
+            try:
+                object.__setattr__(self, name, np.asarray(getattr(self, name), float))
+            except (TypeError, ValueError):
+                raise ValueError(f"{name} must be real numbers (a rectangular array)") from None
+        if self.t.ndim != 1 or self.distance.shape != self.t.shape:
+            raise ValueError(f"t {self.t.shape} and distance {self.distance.shape} must be 1-D, of one length")
+        if self.u.ndim != 2 or self.u.shape[1] != self.t.size:
+            raise ValueError(f"u must be (n_tasselli, n_samples) = (., {self.t.size}), got shape {self.u.shape}")
+
     @property
     def dt(self) -> float:
         """Time step (s)."""
@@ -223,8 +237,10 @@ def road_grid(
     d0, d1 = guards.interval("distance", distance)
     oversample = guards.integer("oversample", oversample, 1, 64)
     if not callable(profile):
+        hint = " (of a RoadProfile, pass its .height)" if isinstance(profile, RoadProfile) else ""
+        shown = type(profile).__name__ if isinstance(profile, (RoadProfile, np.ndarray)) else repr(profile)[:80]
         raise ValueError(
-            f"profile = {profile!r} must be a function of the road coordinate: profile(s) or profile(s, y)"
+            f"profile = {shown} must be a function of the road coordinate: profile(s) or profile(s, y){hint}"
         )
     dt = 1.0 / fs
     n = int(np.floor((d1 - d0) / (speed * dt))) + 1

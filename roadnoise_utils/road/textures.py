@@ -35,6 +35,7 @@ from scipy.special import kv
 
 from .. import guards
 from ..repro.paths import data_file, read_toml
+from ..tire.schema import check_keys
 
 #: ISO 8608 road classes: geometric-mean displacement PSD at n0 = 0.1 cycles/m (m^3).
 ISO8608_CLASSES = {c: 16e-6 * 4**k for k, c in enumerate("ABCDEFGH")}
@@ -119,7 +120,7 @@ class RoadSpectrum:
 def load_texture(name: str | Path) -> RoadSpectrum:
     """A road spectrum from ``data/roads/<name>.toml`` (or a path), validated."""
     path = data_file(name, "roads", "road texture")
-    data = read_toml(path)
+    data = check_keys(read_toml(path), {"name", "description", "spectrum"}, path.name, "the file", {"spectrum"})
     spectrum = data.get("spectrum", {})
     if not isinstance(spectrum, dict):
         raise ValueError(f"{path.name}: [spectrum] must be a table (iso_class or reference_psd, exponent, ...)")

@@ -26,7 +26,12 @@ class RingParameters:
 
 def ring_frequencies(n: np.ndarray | int, ring: RingParameters) -> np.ndarray:
     """Closed-form natural frequencies (Hz) of circumferential wave numbers ``n`` (n = 0: torsion)."""
-    n = np.asarray(n, dtype=float)
+    try:
+        n = np.asarray(n, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"n = {n!r} must be wave numbers: whole numbers >= 0") from None
+    if not (np.all(np.isfinite(n)) and np.all(n >= 0) and np.all(n == np.round(n))):
+        raise ValueError(f"n = {n!r} must be wave numbers: whole numbers >= 0")
     r = ring.radius
     bracket = ring.bending_stiffness * (n**2 - 1) ** 2 / r**4 + ring.tension * (n**2 - 1) / r**2 + ring.k_radial
     omega2 = (n**2 * bracket + ring.k_tangential) / (ring.mass_per_length * (n**2 + 1))

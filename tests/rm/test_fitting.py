@@ -154,7 +154,7 @@ def test_a_weight_that_is_zero_everywhere_is_refused_naming_the_row(known_system
 
 def test_frfs_too_large_to_fit_and_ragged_rows_are_refused_with_a_message(known_system):
     _, _, frf = known_system(seed=4)
-    with pytest.raises(ValueError, match=r"frf: values up to [0-9.]+e\+30[0-9], valid range is \|H\| <= 1e\+150"):
+    with pytest.raises(ValueError, match=r"H: values up to [0-9.]+e\+30[0-9], valid range is \|H\| <= 1e\+150"):
         ru.fit_tasselli(BAND_FREQS, frf[None, :] * 1e295, n_poles=8)  # was a raw overflow warning
     with pytest.raises(ValueError, match="every row as long as freqs"):
         ru.fit_tasselli(BAND_FREQS, [frf, frf[:-3]], n_poles=8)

@@ -19,6 +19,7 @@ import numpy as np
 import pandas as pd
 import scipy.sparse.linalg as spla
 
+from ... import guards
 from ..ring_theory import RingParameters, ring_frequencies
 from .mechanics import build_fet
 from .mode_shapes import wave_numbers
@@ -67,6 +68,7 @@ def ring_check(spec: TireSpec, n_max: int = 8, n_elements: int | None = None) ->
         Index ``n``; columns ``closed_form_Hz``, ``fe_Hz`` (mean of the sin/cos pair) and
         ``rel_error`` (FE / closed form - 1).
     """
+    n_max = guards.integer("n_max", n_max, 0, 40)
     ring_spec = single_ring_spec(spec, n_elements)
     fet = build_fet(ring_spec)
     free = np.setdiff1d(np.arange(fet.n_dof), fet.mesh.hub_dofs)

@@ -171,6 +171,8 @@ def frf_visco(
     FRFResult
         ``H`` per tassello, ``H_tot``, ``G_H`` and the per-contact-point FRFs.
     """
+    for name, value in (("progress", progress), ("use_symmetry", use_symmetry), ("stick", stick)):
+        guards.flag(name, value)
     freqs = np.asarray(freqs, dtype=float)
     if freqs.ndim != 1 or freqs.size == 0 or not np.all(np.isfinite(freqs)) or np.any(freqs < 0):
         raise ValueError("freqs must be a non-empty 1-D array of finite frequencies >= 0 Hz")

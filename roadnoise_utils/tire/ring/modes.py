@@ -24,6 +24,7 @@ import numpy as np
 import pandas as pd
 import scipy.sparse.linalg as spla
 
+from ... import guards
 from .loaded import LoadedTire, loaded_tire
 from .mechanics import FETModel
 from .mode_shapes import lateral_order, wave_numbers
@@ -125,10 +126,8 @@ def loaded_modes(
     loaded: LoadedTire | None = None,
 ) -> LoadedModes:
     """The ``n_modes`` lowest modes of the loaded tire, moduli frozen at ``reference_frequency`` (Hz)."""
-    if not (isinstance(n_modes, (int, np.integer)) and 1 <= n_modes <= 500):
-        raise ValueError(f"n_modes = {n_modes}: valid range is 1..500")
-    if not (np.isfinite(reference_frequency) and reference_frequency >= 0):
-        raise ValueError(f"reference_frequency = {reference_frequency} Hz: valid range is [0, inf) Hz")
+    n_modes = guards.integer("n_modes", n_modes, 1, 500)
+    reference_frequency = guards.real("reference_frequency", reference_frequency, 0.0, unit="Hz")
     lt = loaded or loaded_tire(fet, static)
     omega_ref = 2 * np.pi * reference_frequency
     k = lt.stiffness(omega_ref, storage_only=True).tocsc()

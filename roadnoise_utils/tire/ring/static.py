@@ -354,7 +354,10 @@ def load_deflection(
     fet: FETModel, loads: np.ndarray, road: str = "flat", drum_radius: float | None = None
 ) -> np.ndarray:
     """Deflection (m) at each load (N): the load-deflection curve of the tire."""
-    loads = [check_load(w) for w in np.atleast_1d(loads)]
+    loads = np.atleast_1d(np.asarray(loads, dtype=object))
+    if loads.size == 0 or loads.ndim != 1:
+        raise ValueError(f"loads must be a non-empty list of loads (N), got shape {loads.shape}")
+    loads = [guards.real(f"loads[{k}]", w, *guards.LOAD_RANGE, unit="N") for k, w in enumerate(loads)]
     problem = contact_problem(fet, make_road(road, drum_radius))
     return np.array([problem.solve(w)[1] for w in loads])
 
