@@ -77,6 +77,8 @@ class RoadInput:
         :func:`roadnoise_utils.rm.simulate` checks the values are finite, in chunks)."""
         guards.real("speed", self.speed, 0.0, MAX_SPEED, lo_open=True, unit="m/s")
         for name in ("t", "distance", "u"):
+            if np.iscomplexobj(getattr(self, name)):  # np.asarray(..., float) would drop the imaginary part
+                raise ValueError(f"{name} must be real numbers, got complex values")
             try:
                 object.__setattr__(self, name, np.asarray(getattr(self, name), float))
             except (TypeError, ValueError):
