@@ -166,7 +166,7 @@ each(
 each(
     "RoadInput",
     "u",
-    (np.zeros((3, 7)), np.zeros(200), np.full((3, 200), "a")),
+    (np.zeros((3, 7)), np.zeros(200), np.full((3, 200), "a"), np.zeros((3, 200)) + 1e-3j),
     lambda i, v: ru.RoadInput(i.road.t, i.road.distance, v, 10.0, "x"),
 )
 
