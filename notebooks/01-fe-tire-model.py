@@ -53,6 +53,10 @@ ru.set_style()
 tire_name = "165_65R14"
 n_modes = 60
 
+# %%
+# The parameters above, checked before anything runs: a wrong one is refused naming it and its valid values
+ru.experiments.check_parameters(tire_name=tire_name, n_modes=n_modes)
+
 # %% [markdown]
 # ## 1. The tire parameters
 #

@@ -55,6 +55,10 @@ tire_name = "165_65R14"
 road = "flat"
 f_band = 250.0
 
+# %%
+# The parameters above, checked before anything runs: a wrong one is refused naming it and its valid values
+ru.experiments.check_parameters(tire_name=tire_name, road=road, f_band=f_band)
+
 # %% [markdown]
 # ## 1. The procedure (Fig. 4 analogue)
 

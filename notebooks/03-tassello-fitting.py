@@ -34,11 +34,13 @@
 # We fit the same biproper model in **pole-residue form** by **relaxed vector fitting**
 # (Gustavsen & Semlyen 1999; Gustavsen 2006) — stable poles, real coefficients, the DC value
 # imposed — realise it straight from poles and residues (never through ill-conditioned
-# degree-8 polynomials), and check the result against a peer library, scikit-rf.
+# degree-8 polynomials), and check the result against two peer libraries, scikit-rf and
+# pyvectorfit.
 
 # %%
 import matplotlib.pyplot as plt
 import numpy as np
+import pandas as pd
 
 import roadnoise_utils as ru
 
@@ -50,6 +52,10 @@ tire_name = "165_65R14"
 road = "flat"
 f_max = 250.0
 tolerance = 0.01
+
+# %%
+# The parameters above, checked before anything runs: a wrong one is refused naming it and its valid values
+ru.experiments.check_parameters(tire_name=tire_name, road=road, f_max=f_max, tolerance=tolerance)
 
 # %%
 # NBVAL_IGNORE_OUTPUT
@@ -218,22 +224,37 @@ if ru.experiments.applicable(tire, "hub_transfer"):
     )
 
 # %% [markdown]
-# ## 5. Peer check: scikit-rf's `VectorFitting` on the same FRFs
+# ## 5. Peer check: scikit-rf's `VectorFitting` and pyvectorfit's `fit` on the same FRFs
 #
-# The same model (the same order, constant term) fitted with scikit-rf, an independent
-# implementation of the same algorithm, on the same data:
+# The same model (the same order, constant term) fitted with two independent implementations of
+# the same algorithm, on the same data. Vector fitting relocates poles from a starting set to a
+# local optimum, and which start reaches the better one differs from tassello to tassello: ours
+# runs from two (lightly damped pairs spread evenly over the band, and spread evenly on a log
+# scale, as pyvectorfit starts) and keeps each tassello's better fit
+# (`ru.fit_tasselli(..., starting_poles=...)`). Poles the band cannot pin down are held to
+# what it supports: above the band, at least 0.5 % damping; none slower than the grid resolves.
 
 # %%
 # NBVAL_IGNORE_OUTPUT
 # Side by side: errors and wall time (timings vary run to run)
 peer_errors, peer_seconds = ru.rm.fitting_peer.skrf_vector_fit(visco.freqs, visco.H, fits.n_poles, f_max)
-ru.rm.fitting_peer.fit_comparison(fits.rms_errors, fits.seconds, peer_errors, peer_seconds)
+pyvf_errors, pyvf_seconds = ru.rm.fitting_peer.pyvectorfit_fit(visco.freqs, visco.H, fits.n_poles, f_max)
+pd.concat(
+    [
+        ru.rm.fitting_peer.fit_comparison(fits.rms_errors, fits.seconds, peer_errors, peer_seconds),
+        ru.rm.fitting_peer.fit_comparison(
+            fits.rms_errors, fits.seconds, pyvf_errors, pyvf_seconds, peer="pyvectorfit fit"
+        ).iloc[1:],
+    ]
+)
 
 # %%
 # NBVAL_CHECK_OUTPUT
-# Our fit is at least as good as the peer's on every tassello
+# Our fit is at least as good as scikit-rf's on every tassello, and within 1.2x of the better peer
+better_peer = np.minimum(peer_errors, pyvf_errors)
 print(f"ours <= scikit-rf on {np.sum(fits.rms_errors <= peer_errors)} of {len(fits)} tasselli")
-assert np.all(fits.rms_errors <= peer_errors)
+print(f"ours within 1.2x of the better peer on {np.sum(fits.rms_errors <= 1.2 * better_peer)} of {len(fits)} tasselli")
+assert np.all(fits.rms_errors <= peer_errors) and np.all(fits.rms_errors <= 1.2 * better_peer)
 
 # %% [markdown]
 # ## 6. Paper vs ours

@@ -48,6 +48,10 @@ speed_kmh = None
 length = 400.0
 
 # %%
+# The parameters above, checked before anything runs: a wrong one is refused naming it and its valid values
+ru.experiments.check_parameters(tire_name=tire_name, length=length)
+
+# %%
 # The parameters left at None take the paper's road test (data/conditions/road_test.toml)
 road_test = ru.experiments.road_test_conditions(speed_kmh=speed_kmh, textures=texture_names, seed=seed)
 texture_names, seed, speed_kmh = road_test.textures, road_test.seed, road_test.speed_kmh

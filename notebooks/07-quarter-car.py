@@ -61,6 +61,10 @@ texture_names = None
 band = 250.0
 
 # %%
+# The parameters above, checked before anything runs: a wrong one is refused naming it and its valid values
+ru.experiments.check_parameters(vehicle_name=vehicle_name, tire_name=tire_name, band=band)
+
+# %%
 # The parameters left at None take the paper's road test (data/conditions/road_test.toml)
 road_test = ru.experiments.road_test_conditions(speed_kmh, texture_names, duration, seed)
 speed_kmh, seed, duration, texture_names = road_test.speed_kmh, road_test.seed, road_test.duration, road_test.textures

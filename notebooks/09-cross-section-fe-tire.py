@@ -61,6 +61,10 @@ pd.set_option("display.width", 160)
 tire_name = "165_65R14_cross_section"
 ring_name = "165_65R14"
 
+# %%
+# The parameters above, checked before anything runs: a wrong one is refused naming it and its valid values
+ru.experiments.check_parameters(tire_name=tire_name, ring_name=ring_name)
+
 # %% [markdown]
 # ## 1. The construction
 #

@@ -52,6 +52,10 @@ tire_size = "165_65R14"
 car_tire_size = "195_65R15"
 
 # %%
+# The parameters above, checked before anything runs: a wrong one is refused naming it and its valid values
+ru.experiments.check_parameters(tire_size=tire_size, car_tire_size=car_tire_size)
+
+# %%
 # The three models of each tire: our two FE tires and the cross-section one written as files
 conditions = ru.experiments.cleat_conditions()
 section_name = f"{tire_size}_cross_section"

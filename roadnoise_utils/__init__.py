@@ -30,7 +30,7 @@ The package, one folder per stage, data flowing one way:
   the collection, the reproduce command (``python -m roadnoise_utils``)
 """
 
-from . import analysis, experiments, figures, guards, response, rm, road, tire, vehicle
+from . import analysis, experiments, figures, guards, response, rm, road, settings, tire, vehicle
 from .experiments.paper_defaults import cleat_input, solve_static
 from .repro import cache, claims, collection, stages
 from .repro.style import set_style
@@ -87,6 +87,7 @@ __all__ = [
     "fit_tasselli",
     "frf_visco",
     "guards",
+    "settings",
     "identify_modes",
     "load_deflection",
     "load_tire",

@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import math
 import numbers
-import os
 import warnings
 
 import numpy as np
@@ -34,16 +33,9 @@ class ResourceLimitError(ValueError):
 
 def memory_limit() -> float:
     """Largest estimated allocation a stage may make (bytes): ``ROADNOISE_MAX_BYTES`` or 4 GiB."""
-    value = os.environ.get("ROADNOISE_MAX_BYTES")
-    if value is None:
-        return DEFAULT_MEMORY_LIMIT
-    try:
-        limit = float(value)
-    except ValueError:
-        raise ValueError(f"ROADNOISE_MAX_BYTES = {value!r}: give a number of bytes, e.g. 8e9") from None
-    if not limit > 0:
-        raise ValueError(f"ROADNOISE_MAX_BYTES = {value!r}: valid range is > 0 bytes (inf for no limit)")
-    return limit
+    from .settings import positive_number  # settings warns through this module
+
+    return positive_number("ROADNOISE_MAX_BYTES", DEFAULT_MEMORY_LIMIT)
 
 
 def check_memory(n_bytes: float, what: str, parameter: str) -> None:

@@ -18,6 +18,8 @@ from collections.abc import Callable, Iterable, Iterator
 from concurrent.futures import ThreadPoolExecutor
 from typing import TypeVar
 
+from . import settings
+
 T = TypeVar("T")
 R = TypeVar("R")
 
@@ -28,10 +30,8 @@ MAX_THREADS = 2
 def threads() -> int:
     """Threads for one computation: ``ROADNOISE_THREADS`` (1 or 2), else up to :data:`MAX_THREADS` (and the cores
     there are)."""
-    setting = os.environ.get("ROADNOISE_THREADS", "").strip()
-    if setting:
-        if setting not in ("1", "2"):
-            raise ValueError(f"ROADNOISE_THREADS = {setting!r}: valid values are 1 and 2")
+    setting = settings.choice("ROADNOISE_THREADS", ("1", "2"))
+    if setting is not None:
         return int(setting)
     return max(1, min(MAX_THREADS, os.cpu_count() or 1))
 

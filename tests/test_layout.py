@@ -16,7 +16,7 @@ from roadnoise_utils.repro.paths import REPO_ROOT
 
 #: Layers in the order the data flows; a module may import from its own layer or an earlier one.
 LAYERS = [
-    ["analysis", "guards", "parallel", "repro.paths", "repro.cache", "repro.provenance"],
+    ["analysis", "guards", "settings", "parallel", "repro.paths", "repro.cache", "repro.provenance"],
     ["tire"],
     ["road"],
     ["response"],

@@ -14,6 +14,7 @@ experiment                    what it runs                                      
 :func:`cavity.cavity_frfs`    the tire's FRFs with and without its air cavity    14
 :func:`sweep`                 a grid or sample of tire designs on dask -> table  12
 :func:`tire_as_files`         any tire model written as a tire from files        13
+:func:`check_parameters`      the notebooks' other parameters, checked up front  01-13
 ============================  =================================================  ========
 
 ``*_conditions`` functions resolve a test's defaults (an argument left at ``None`` is the
@@ -33,6 +34,7 @@ from . import (
     moving_hub,
     one_sided_cleat,
     paper_defaults,
+    parameters,
     road,
     tire_models,
     whole_car,
@@ -52,6 +54,7 @@ from .one_sided_cleat import (
     one_sided_conditions,
     speed_sweep,
 )
+from .parameters import check_parameters
 from .road import RoadTest, RoadTestConditions, road_test, road_test_conditions
 from .tire_models import applicable, tire_as_files
 
@@ -59,6 +62,7 @@ __all__ = [
     "BandExtension",
     "BandModel",
     "band_extension",
+    "check_parameters",
     "bands",
     "cross_section",
     "CleatConditions",
@@ -89,6 +93,7 @@ __all__ = [
     "one_sided_cleat_test",
     "one_sided_conditions",
     "paper_defaults",
+    "parameters",
     "quarter_car",
     "road",
     "road_test",

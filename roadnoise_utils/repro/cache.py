@@ -62,8 +62,8 @@ import numpy as np
 import scipy
 from threadpoolctl import ThreadpoolController
 
-from .. import guards
-from .paths import cache_dir, changed_files, flag_setting, path_setting, recording_reads, replay_reads
+from .. import guards, settings
+from .paths import cache_dir, changed_files, recording_reads, replay_reads
 
 T = TypeVar("T")
 _MAGIC = b"roadnoise-cache-v3\n"
@@ -323,7 +323,7 @@ def _usable_folder() -> Path | None:
 def cache_enabled() -> bool:
     """Whether the cache is on: ``ROADNOISE_CACHE`` unset or on (``off``/``0``/``false``/``no`` turn it
     off; any other value is an error naming the valid ones)."""
-    return flag_setting("ROADNOISE_CACHE", True)
+    return settings.flag("ROADNOISE_CACHE", True)
 
 
 #: Stages computing in this process, and the lock of that count.
@@ -371,9 +371,9 @@ def _log_line(name: str, seconds: float, key: str) -> None:
     A diagnostic never fails a computation: a log that cannot be written is reported once per
     process and file (a warning) and the stage's result is kept.
     """
-    if not os.environ.get("ROADNOISE_STAGE_LOG", "").strip():  # unset or blank: no log
+    log = settings.path("ROADNOISE_STAGE_LOG", None)  # unset or blank: no log
+    if log is None:
         return
-    log = path_setting("ROADNOISE_STAGE_LOG", Path())
     try:
         with open(log, "a") as out:
             out.write(f"{name}\t{seconds:.2f}\t{os.getpid()}\t{key}\n")

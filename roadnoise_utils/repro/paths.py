@@ -1,7 +1,8 @@
 """Where the collection keeps its data, its cache and its figures.
 
-Every location can be overridden by an environment variable, so the package works from an
-editable install in the repository (the normal case) and from anywhere else.
+Every location can be overridden by an environment setting (:mod:`roadnoise_utils.settings`), so
+the package works from an editable install in the repository (the normal case) and from anywhere
+else.
 """
 
 from __future__ import annotations
@@ -15,45 +16,13 @@ import tomllib
 from collections.abc import Iterator
 from pathlib import Path
 
-#: The repository root (the folder holding ``roadnoise_utils/`` and ``data/``).
-REPO_ROOT = Path(__file__).resolve().parents[2]
-
-
-def path_setting(variable: str, default: Path) -> Path:
-    """The path (a folder or a file) an environment ``variable`` names, or ``default`` when it is unset.
-
-    A relative path is taken from the repository root (:data:`REPO_ROOT`), not from the working
-    folder, so a notebook (run in ``notebooks/``) and the reproduction (run at the root) share
-    one folder. An empty value is refused: it would name the working folder without saying so.
-    """
-    value = os.environ.get(variable)
-    if value is None:
-        return default
-    if not value.strip():
-        raise ValueError(
-            f"{variable} is set but empty: give a folder (a relative one is taken from {REPO_ROOT}) or unset it"
-        )
-    path = Path(value).expanduser()
-    return path if path.is_absolute() else REPO_ROOT / path
-
-
-def flag_setting(variable: str, default: bool) -> bool:
-    """An on/off environment ``variable``: ``on/off``, ``1/0``, ``true/false``, ``yes/no`` (any case),
-    ``default`` when unset; any other value is refused with the valid ones."""
-    value = os.environ.get(variable)
-    if value is None:
-        return default
-    word = value.strip().lower()
-    if word in ("on", "1", "true", "yes"):
-        return True
-    if word in ("off", "0", "false", "no"):
-        return False
-    raise ValueError(f"{variable} = {value!r}: valid values are on/off, 1/0, true/false, yes/no")
+from .. import settings
+from ..settings import REPO_ROOT
 
 
 def data_dir() -> Path:
     """Folder of the data files (``ROADNOISE_DATA_DIR``, default ``<repo>/data``); it must hold a ``tires`` folder."""
-    folder = path_setting("ROADNOISE_DATA_DIR", REPO_ROOT / "data")
+    folder = settings.path("ROADNOISE_DATA_DIR", REPO_ROOT / "data")
     if not (folder / "tires").is_dir():
         raise FileNotFoundError(
             f"ROADNOISE_DATA_DIR = {str(folder)!r} has no tires/ folder: point it at a copy of the repository's data/ "
@@ -64,12 +33,12 @@ def data_dir() -> Path:
 
 def cache_dir() -> Path:
     """Folder of the stage cache (``ROADNOISE_CACHE_DIR``, default ``<repo>/.cache``)."""
-    return path_setting("ROADNOISE_CACHE_DIR", REPO_ROOT / ".cache")
+    return settings.path("ROADNOISE_CACHE_DIR", REPO_ROOT / ".cache")
 
 
 def figure_dir() -> Path:
     """Folder the reproduction writes figures to (``ROADNOISE_FIGURE_DIR``, default ``<repo>/figures``)."""
-    return path_setting("ROADNOISE_FIGURE_DIR", REPO_ROOT / "figures")
+    return settings.path("ROADNOISE_FIGURE_DIR", REPO_ROOT / "figures")
 
 
 def data_file(name: str | Path, folder: str, what: str) -> Path:

@@ -32,7 +32,6 @@ from .vf_kernels import (
     conjugate_closed,
     errors_for_poles,
     fit_for_poles,
-    initial_poles,
     sigma_zeros,
     split_poles,
     stack_parts,
@@ -86,20 +85,21 @@ def fit_common(
     s: np.ndarray,
     h: np.ndarray,
     w: np.ndarray,
-    n_poles: int,
+    start_poles: np.ndarray,
     iterations: int,
     tolerance: float,
     dc: np.ndarray | None,
 ) -> CommonFit:
     """Common-pole relaxed vector fitting of the rows of ``h`` (K, n_s) at scaled ``s``.
 
-    ``w`` (K, n_s) the weights, ``dc`` (K,) the DC values to impose (or None). Relocates up to
+    ``w`` (K, n_s) the weights, ``start_poles`` the starting poles (scaled ``s``,
+    :func:`.vf_kernels.initial_poles`), ``dc`` (K,) the DC values to impose (or None). Relocates up to
     ``iterations`` times, stopping when the poles move less than ``tolerance`` relative to the
     largest; after each relocation every row's residues are solved, and the iteration whose
     worst row's weighted relative RMS error is the smallest is kept (ties: the earlier).
     """
     k = h.shape[0]
-    poles = initial_poles(n_poles)
+    poles = np.asarray(start_poles, complex)
 
     def row_errors(p: np.ndarray) -> np.ndarray:
         real, upper = split_poles(p)
@@ -120,5 +120,5 @@ def fit_common(
     models = [fit_for_poles(s, h[i], w[i], best, None if dc is None else dc[i]) for i in range(k)]
     errors = np.array(history).T.tolist()
     for i, model in enumerate(models):
-        errors[i][best_it] = model[4]  # the kept poles' errors from the final (SVD) solves
+        errors[i][best_it] = model.error  # the kept poles' errors from the final (SVD) solves
     return CommonFit(models=models, errors=errors, best_iteration=best_it, iterations=used)

@@ -46,7 +46,16 @@ def realize(fit: RationalFit) -> control.StateSpace:
 
 
 def real_blocks(fit: RationalFit) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(A, b, c) of one fit, conjugate pairs as 2x2 blocks."""
+    """(A, b, c) of one fit, conjugate pairs as 2x2 blocks.
+
+    A fit with a proportional term :math:`e s` has no state space (it is improper: the output
+    would need the input's derivative) and is refused.
+    """
+    if fit.proportional != 0.0:
+        raise ValueError(
+            f"this fit has a proportional term e = {fit.proportional:.3g} (vector_fit(..., proportional=True)): an "
+            "improper transfer function has no state space; fit with proportional=False"
+        )
     tol = 1e-12 * np.max(np.abs(fit.poles))
     blocks_a, blocks_b, blocks_c = [], [], []
     k = 0

@@ -21,7 +21,7 @@ from typing import Any
 import numpy as np
 
 import roadnoise_utils as ru
-from roadnoise_utils import guards, parallel
+from roadnoise_utils import guards, parallel, settings
 from roadnoise_utils.repro import paths
 
 from .inputs import Inputs
@@ -83,6 +83,7 @@ each("vector_fit", "n_poles", (0, -2, 2.5, True, "8", 10_000), lambda i, v: ru.v
 each("vector_fit", "iterations", (0, -1, 2.5, True, "8"), lambda i, v: ru.vector_fit(i.freqs, i.H[0], iterations=v))
 each("vector_fit", "tolerance", POSITIVE, lambda i, v: ru.vector_fit(i.freqs, i.H[0], tolerance=v))
 each("vector_fit", "enforce_dc", FLAG, lambda i, v: ru.vector_fit(i.freqs, i.H[0], enforce_dc=v))
+each("vector_fit", "proportional", FLAG, lambda i, v: ru.vector_fit(i.freqs, i.H[0], proportional=v))
 each(
     "vector_fit",
     "weight",
@@ -108,6 +109,25 @@ each("fit_tasselli", "iterations", (0, -1, 2.5, True), lambda i, v: ru.fit_tasse
 each("fit_tasselli", "tolerance", (0.0, -1.0, NAN, "x"), lambda i, v: ru.fit_tasselli(i.freqs, i.H, tolerance=v))
 each("fit_tasselli", "common_poles", FLAG, lambda i, v: ru.fit_tasselli(i.freqs, i.H, common_poles=v))
 each("fit_tasselli", "enforce_dc", FLAG[:2], lambda i, v: ru.fit_tasselli(i.freqs, i.H, enforce_dc=v))
+each("fit_tasselli", "proportional", FLAG[:2], lambda i, v: ru.fit_tasselli(i.freqs, i.H, proportional=v))
+each(
+    "fit_tasselli",
+    "starting_poles",
+    ("random", (), ("log", "log"), ("linear", 3), 42),
+    lambda i, v: ru.fit_tasselli(i.freqs, i.H, starting_poles=v),
+)
+
+
+@case("fit_tasselli-proportional-with-common_poles", "proportional")
+def _proportional_common(i):
+    ru.fit_tasselli(i.freqs, i.H, common_poles=True, proportional=True)
+
+
+@case("realize-proportional-fit", "proportional")
+def _realize_improper(i):
+    ru.realize(ru.vector_fit(i.freqs, i.H[0], proportional=True))
+
+
 each(
     "fit_tasselli",
     "target_error",
@@ -491,7 +511,7 @@ for _value in ("maybe", "of", ""):
     CASES.append(
         Case(
             f"setting-ROADNOISE_CACHE={_value!r}",
-            _setting("ROADNOISE_CACHE", _value, lambda: paths.flag_setting("ROADNOISE_CACHE", True)),
+            _setting("ROADNOISE_CACHE", _value, lambda: settings.flag("ROADNOISE_CACHE", True)),
             ("ROADNOISE_CACHE",),
             (ValueError,),
             ("tmp", "env"),
