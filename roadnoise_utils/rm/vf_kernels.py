@@ -43,6 +43,8 @@ def check_data(freqs: np.ndarray, frf: np.ndarray, n_poles: int) -> None:
 #: frequency (as pyvectorfit starts): the first suits modes spread evenly in frequency, the
 #: second a response with low-frequency features (e.g. real poles far below the top).
 STARTS = ("linear", "log")
+#: The default: the linear start alone, whose fits do not follow round-off (see ``vector_fit``).
+DEFAULT_STARTS = ("linear",)
 
 
 def initial_poles(n_poles: int, spacing: str = "linear", lowest: float = 0.0) -> np.ndarray:

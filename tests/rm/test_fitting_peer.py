@@ -91,13 +91,14 @@ def test_without_the_proportional_term_the_real_poles_are_lost():
 def test_gustavsen_semlyen_18_poles_with_1_percent_noise(seed):
     """Every pole within 3 Cramer-Rao standard deviations (per part; the real pole at -4500 rad/s:
     +-11 % of itself) of the truth. Relative noise is matched by relative weights; the poorly
-    determined real poles need 50-100 relocations to settle, hence the cap of 200."""
+    determined real poles need 50-100 relocations to settle, hence the cap of 200. From both starts
+    (20 of 20 draws pass; the linear start alone, 17 of 20)."""
     rng = np.random.default_rng(seed)
     clean = gs_response()
     data = clean * (1 + 0.01 * (rng.standard_normal(clean.size) + 1j * rng.standard_normal(clean.size)) / np.sqrt(2))
     fit = vector_fit(
         GS_FREQS, data, n_poles=18, weight="relative", iterations=200, tolerance=1e-6, enforce_dc=False,
-        proportional=True,
+        proportional=True, starting_poles=STARTS,
     )  # fmt: skip
     bound = pole_standard_deviations(0.01)
     for pole, std in zip(GS_POLES, bound):
@@ -125,17 +126,17 @@ def peer_errors(tire):
     return visco, {n: np.minimum(skrf[n], pyvf[n]) for n in orders}
 
 
-def test_every_tassello_within_1_2x_of_the_best_peer(peer_errors):
+def test_from_both_starts_every_tassello_within_1_2x_of_the_best_peer(peer_errors):
     visco, best = peer_errors
     for n, peer in best.items():
-        ours = ru.fit_tasselli(visco.freqs, visco.H, n_poles=n, f_max=BAND).rms_errors
+        ours = ru.fit_tasselli(visco.freqs, visco.H, n_poles=n, f_max=BAND, starting_poles=STARTS).rms_errors
         assert np.all(ours <= 1.2 * peer), (n, np.max(ours / peer))
 
 
 def test_two_starts_never_worse_than_either(tire):
     """Each tassello keeps the better of the two starts: never worse than a single start's fit."""
     visco = ru.stages.frf_visco(tire)
-    both = ru.fit_tasselli(visco.freqs, visco.H, n_poles=13, f_max=BAND)
+    both = ru.fit_tasselli(visco.freqs, visco.H, n_poles=13, f_max=BAND, starting_poles=STARTS)
     for start in STARTS:
         one = ru.fit_tasselli(visco.freqs, visco.H, n_poles=13, f_max=BAND, starting_poles=(start,))
         assert np.all(both.rms_errors <= one.rms_errors * (1 + 1e-9))
@@ -148,3 +149,17 @@ def test_a_fit_with_a_proportional_term_has_no_state_space():
     assert fit(GS_FREQS[-1:])[0] == pytest.approx(gs_response(GS_FREQS[-1:])[0], rel=1e-9)
     with pytest.raises(ValueError, match="proportional"):
         ru.realize(fit)
+
+
+def test_the_default_fits_follow_the_data_continuously(tire):
+    """A change of the data at round-off (1e-15) moves the default fits by round-off, not to another
+    local optimum: results computed in two processes (whose FRFs differ in the last bits) agree."""
+    visco = ru.stages.frf_visco(tire)
+    fits = ru.stages.fit_tasselli(tire)
+    band = visco.freqs <= BAND
+    rng = np.random.default_rng(0)
+    nudged = visco.H * (1 + 1e-15 * rng.standard_normal(visco.H.shape))
+    again = ru.fit_tasselli(visco.freqs, nudged, n_poles=fits.n_poles, f_max=BAND)
+    for a, b in zip(fits, again):
+        response = a(visco.freqs[band])
+        assert np.max(np.abs(b(visco.freqs[band]) - response)) < 1e-7 * np.max(np.abs(response))
