@@ -29,12 +29,14 @@ def _frozen_modes(
     k = solver.stiffness(omega_ref, storage_only=storage)
     m = solver.mass
     n_modes = 20
+    # ARPACK's starting vector, fixed (its default is random: the modes would differ in their last bits run to run)
+    start = np.random.default_rng(0).standard_normal(k.shape[0]).astype(k.dtype)
     while True:
         n_modes = min(n_modes, k.shape[0] - 2)
         if storage:
-            vals, vecs = spla.eigsh(k, k=n_modes, M=m, sigma=0.0)
+            vals, vecs = spla.eigsh(k, k=n_modes, M=m, sigma=0.0, v0=start)
         else:
-            vals, vecs = spla.eigs(k, k=n_modes, M=m, sigma=0.0)
+            vals, vecs = spla.eigs(k, k=n_modes, M=m, sigma=0.0, v0=start)
         order = np.argsort(vals.real)
         vals, vecs = vals[order], vecs[:, order]
         if np.sqrt(vals.real.max()) / (2 * np.pi) >= f_min_top or n_modes >= k.shape[0] - 2:
