@@ -272,10 +272,9 @@ def _fit_common(
 ) -> list[RationalFit]:
     """One pole set for every row of ``frf`` (:func:`.common_poles.fit_common`), per-row residues.
 
-    From each starting pole set; the one whose worst row's error is the smallest is kept.
+    From each starting pole set; the one whose worst row's error is the smallest is kept. No
+    proportional term (``fit_tasselli`` refuses ``proportional`` with ``common_poles``).
     """
-    if proportional:
-        raise ValueError("proportional=True is for fits with their own poles per FRF (common_poles=False)")
     n_poles = _check_options(n_poles, iterations, tolerance)
     check_data(freqs, frf, n_poles)
     scale = 2 * np.pi * freqs[-1]
