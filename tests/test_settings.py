@@ -12,7 +12,7 @@ from roadnoise_utils import guards, settings
 from roadnoise_utils.repro.paths import REPO_ROOT
 from tests.test_layout import PACKAGE_DIR
 
-ENVIRON_READERS = {("os", "getenv"), ("environ", "get"), ("environ", "__getitem__")}
+ENVIRON_READERS = {("os", "getenv"), ("environ", "get")}
 
 
 def _environment_reads(tree: ast.AST) -> list[str]:

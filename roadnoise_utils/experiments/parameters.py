@@ -68,10 +68,11 @@ def _band_top(name: str, value: Any) -> float:
     return guards.real(name, value, 2.0, MAX_FREQUENCY, lo_open=True, unit="Hz")
 
 
+#: Each parameter's check: ``check(name, value)`` raises, naming both, when the value is not valid.
 CHECKS: dict[str, Callable[[str, Any], Any]] = {
     "tire_name": _tire,
     "ring_name": _tire,
-    "vehicle_name": lambda name, value: (_file(name, value, "vehicles", "vehicle file"), value)[1],
+    "vehicle_name": lambda name, value: _file(name, value, "vehicles", "vehicle file"),
     "tire_size": _tire_size,
     "car_tire_size": _car_tire_size,
     "road": _road,
