@@ -13,6 +13,7 @@ Public entry points::
     tire_F = ru.assemble_fixed_hub(fits)        # python-control StateSpace (A_F, B_F, C_F, D_F), Eq. 3-4
     u      = ru.cleat_input(static, speed=30/3.6)  # RoadInput: t, u[tassello, t] (the paper's cleat)
     force  = ru.simulate(tire_F, u)             # fast LTI simulation: hub force (N) vs time/distance
+    ru.export_fmu("165_65R14", "tire.fmu", speed=30 / 3.6)  # the moving-hub tire as an FMI 2.0 FMU
     ru.write_uff58("frfs.uff", visco)           # every FRF (H_i, H_tot, G_H) as UFF 58; ru.read_uff58 reads it
     road   = ru.road.load_crg("road.crg")       # an OpenCRG road (its modifiers explicit: ``modifiers=``)
     run    = ru.experiments.cleat_test("165_65R14")   # the paper's test, conditions resolved once
@@ -24,13 +25,15 @@ The package, one folder per stage, data flowing one way:
 * :mod:`.rm` — fits, state space (fixed and moving hub), simulation (stages 6-9)
 * :mod:`.road` — tassello inputs from cleats, textures and road files (stage 11)
 * :mod:`.vehicle` — quarter car, corner coupling, spectra (stages 10, 12)
+* :mod:`.fmu` — the tire for vehicle tools: an FMI 2.0 FMU, state-space ``.mat`` files
 * :mod:`.experiments` — the paper's tests, reading ``data/conditions`` once
 * :mod:`.figures` — the chapters' figure modules
 * :mod:`.repro` — paths, the stage cache, :mod:`.stages` (cached stage functions), claims,
   the collection, the reproduce command (``python -m roadnoise_utils``)
 """
 
-from . import analysis, experiments, figures, guards, response, rm, road, settings, tire, vehicle
+from . import analysis, experiments, figures, fmu, guards, response, rm, road, settings, tire, vehicle
+from .experiments.fmu_export import export_fmu
 from .experiments.paper_defaults import cleat_input, solve_static
 from .repro import cache, claims, collection, stages
 from .repro.style import set_style
@@ -82,8 +85,10 @@ __all__ = [
     "cleat_input",
     "collection",
     "experiments",
+    "export_fmu",
     "export_frf_files",
     "figures",
+    "fmu",
     "fit_tasselli",
     "frf_visco",
     "guards",

@@ -24,6 +24,8 @@ LAYERS = [
     ["tire.ring", "tire.cross_section", "tire.frf_file"],
     ["rm"],
     ["vehicle"],
+    # the tire for the user's vehicle tools (FMU, state-space files)
+    ["fmu"],
     ["repro.style", "repro.inputs"],
     ["repro.stages"],
     ["experiments"],

@@ -15,6 +15,8 @@ experiment                    what it runs                                      
 :func:`sweep`                 a grid or sample of tire designs on dask -> table  12
 :func:`tire_as_files`         any tire model written as a tire from files        13
 :func:`check_parameters`      the notebooks' other parameters, checked up front  01-13
+:func:`export_fmu`            any tire as an FMI 2.0 co-simulation FMU           15
+:func:`fmu_quarter_car`       the road test's quarter car co-simulated with it   15
 ============================  =================================================  ========
 
 ``*_conditions`` functions resolve a test's defaults (an argument left at ``None`` is the
@@ -31,6 +33,7 @@ from . import (
     cross_section,
     design,
     design_sweep,
+    fmu_export,
     moving_hub,
     one_sided_cleat,
     paper_defaults,
@@ -44,6 +47,7 @@ from .calibration import calibration_table
 from .cleat import CleatConditions, CleatRun, CleatTest, cleat_conditions, cleat_test
 from .corner import CornerSetup, QuarterCarTest, corner_setup, quarter_car
 from .design_sweep import SweepError, sample, sweep
+from .fmu_export import FmuQuarterCar, export_fmu, fmu_quarter_car
 from .moving_hub import MovingHubCheck, Suspension, moving_hub_check, suspension_conditions
 from .one_sided_cleat import (
     FrozenCheck,
@@ -69,6 +73,7 @@ __all__ = [
     "CleatRun",
     "CleatTest",
     "CornerSetup",
+    "FmuQuarterCar",
     "FrozenCheck",
     "OneSidedCleatTest",
     "OneSidedConditions",
@@ -78,6 +83,9 @@ __all__ = [
     "RoadTestConditions",
     "Suspension",
     "calibration",
+    "export_fmu",
+    "fmu_export",
+    "fmu_quarter_car",
     "cavity",
     "calibration_table",
     "cleat",

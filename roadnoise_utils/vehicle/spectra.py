@@ -117,3 +117,16 @@ def band_power_ratios(
         expected = predicted[(fc >= lo) & (fc < hi)].sum() * (fc[1] - fc[0])
         ratios.append(measured / expected)
     return np.array(ratios)
+
+
+#: Octave centres (Hz) of the road-noise band (IEC 61260 nominal: 31.5 to 250 Hz).
+OCTAVE_CENTRES = (31.5, 63.0, 125.0, 250.0)
+
+
+def octave_rms(
+    spectrum: tuple[np.ndarray, np.ndarray], centres=OCTAVE_CENTRES, band: tuple[float, float] = (20.0, 250.0)
+) -> np.ndarray:
+    """:func:`band_rms` of a signal's PSD in each octave band: centre ``c`` spans ``c / sqrt(2) .. c sqrt(2)``
+    Hz, clipped to ``band`` (Hz)."""
+    edges = [(max(c / np.sqrt(2.0), band[0]), min(c * np.sqrt(2.0), band[1])) for c in centres]
+    return np.array([band_rms(spectrum, edge) for edge in edges])

@@ -45,3 +45,15 @@ def test_expected_welch_estimate_of_a_steep_spectrum():
     assert raw[0] > 1.1  # what the comparison without the window's kernel would report
     with pytest.raises(ValueError, match="tenth of a Welch bin"):
         ru.vehicle.spectra.expected_psd(np.arange(0.0, 500.0, 0.5), np.ones(1000), fs)
+
+
+def test_octave_rms_of_a_sine_and_of_white_noise():
+    """A 100 Hz sine lies in the 125 Hz octave with its RMS; white noise splits its power by the bands' widths."""
+    from roadnoise_utils.vehicle.spectra import octave_rms
+
+    freqs = np.arange(0.0, 500.0, 0.5)
+    sine = np.where(freqs == 100.0, 0.5 / 0.5, 0.0)  # amplitude 1: power 1/2 in one bin of 0.5 Hz
+    np.testing.assert_allclose(octave_rms((freqs, sine)), [0.0, 0.0, np.sqrt(0.5), 0.0])
+    white = np.ones_like(freqs)
+    powers = octave_rms((freqs, white)) ** 2
+    np.testing.assert_allclose(powers.sum(), 250.0 - 31.5 / np.sqrt(2.0), atol=1.0)

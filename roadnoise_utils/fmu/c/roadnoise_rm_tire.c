@@ -1,0 +1,529 @@
+/* The moving-hub RM tire (Belluzzo et al. 2002, Eq. 5-7) as an FMI 2.0 co-simulation slave.
+
+   One source for every tire: the tire's numbers are read at instantiation from
+   resources/tire.bin, written by roadnoise_utils.fmu.tables (the layout is documented there).
+
+   Inputs at each communication point t_k: the road heights at the footprint's leading edge,
+   one per lateral strip (m), and the hub's vertical displacement (m). Outputs at t_k: the hub
+   force F_M = F_F + F_H (N) and its two parts (Eq. 5). The road that has entered the footprint
+   is kept as a delay line of the leading-edge heights; each tassello's displacement is a fixed
+   weighted sum of it (the footprint's averaging kernels for a road linear between samples).
+   Every modal section is stepped by its exact first-order-hold recursion
+       x_k = e x_{k-1} + b0 v_{k-1} + b1 v_k,   output factor * Re(x_k),
+   which needs the input at t_k: the outputs at t_k depend on the inputs set at t_k (direct
+   feedthrough). A master sets the inputs, reads the outputs, then calls fmi2DoStep. */
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fmi2Functions.h"
+
+#define VR_FORCE 0
+#define VR_FIXED_HUB_FORCE 1
+#define VR_HUB_FORCE 2
+#define VR_HUB_DISPLACEMENT 3
+#define VR_SPEED 4
+#define VR_STEP 5
+#define VR_LEADING_EDGE 6
+#define VR_ROAD 10
+#define VR_ROAD_Y 100000
+#define FORMAT_VERSION 1
+
+typedef struct {
+    /* the tire's numbers (tire.bin) */
+    int n_strips, n_tasselli, n_taps, n_sections, n_rows;
+    double dt, speed, leading_edge;
+    double *strip_y;     /* n_strips: lateral position of each road input (m) */
+    double *direct;      /* n_tasselli + 1: feedthrough of each tassello's displacement, then the hub's */
+    int *row_strip, *row_tassello;
+    double *taps;        /* n_rows x n_taps: weight of the strip's height m steps ago on the tassello */
+    int *source;         /* n_sections: the input driving each section (n_tasselli: the hub) */
+    double *e_re, *e_im, *b0_re, *b0_im, *b1_re, *b1_im, *factor;
+    /* the state at the last committed point */
+    double *x_re, *x_im, *v_prev;  /* per section: state and drive at t_{k-1} */
+    double *x_new_re, *x_new_im;   /* per section: state at t_k for the inputs now set */
+    double *delay;       /* n_strips x n_taps ring buffers of committed leading-edge heights */
+    double *first;       /* n_strips: the first committed heights (the road behind the first sample) */
+    int head, n_committed;
+    double *road;        /* n_strips: inputs now set */
+    double hub;
+    double *u;           /* n_tasselli + 1: tassello displacements and the hub's, at t_k */
+    double force, fixed_hub_force, hub_force;
+    int fresh;           /* outputs computed for the inputs now set */
+    double time;
+    int initialised;
+    char *instance_name;
+    const fmi2CallbackFunctions *callbacks;
+    int logging;
+} Tire;
+
+static void log_message(Tire *tire, fmi2Status status, const char *category, const char *format, ...) {
+    char message[1024], escaped[2048];
+    size_t i, n = 0;
+    va_list args;
+    if (tire == NULL || tire->callbacks == NULL || tire->callbacks->logger == NULL) return;
+    if (status == fmi2OK && !tire->logging) return;
+    va_start(args, format);
+    vsnprintf(message, sizeof message, format, args);
+    va_end(args);
+    /* the message is passed as the logger's format: a '%' doubled reads as itself whether or not it formats */
+    for (i = 0; message[i] && n + 2 < sizeof escaped; i++) {
+        if (message[i] == '%') escaped[n++] = '%';
+        escaped[n++] = message[i];
+    }
+    escaped[n] = 0;
+    tire->callbacks->logger(tire->callbacks->componentEnvironment, tire->instance_name, status, category, escaped);
+}
+
+#define FAIL(tire, ...)                                           \
+    do {                                                          \
+        log_message((tire), fmi2Error, "logStatusError", __VA_ARGS__); \
+        return fmi2Error;                                         \
+    } while (0)
+
+/* ---- reading tire.bin ---------------------------------------------------------------- */
+
+static int read_block(FILE *file, void *out, size_t size, size_t count) {
+    return fread(out, size, count, file) == count;
+}
+
+static double *read_doubles(FILE *file, size_t count, int *ok) {
+    double *out = (double *)calloc(count > 0 ? count : 1, sizeof(double));
+    if (out == NULL || !read_block(file, out, sizeof(double), count)) *ok = 0;
+    return out;
+}
+
+static int *read_ints(FILE *file, size_t count, int *ok) {
+    int *out = (int *)calloc(count > 0 ? count : 1, sizeof(int));
+    if (out == NULL || !read_block(file, out, sizeof(int), count)) *ok = 0;
+    return out;
+}
+
+/* "file:///a/b%20c" -> "/a/b c" (the resource location is a file URI, FMI 2.0 section 2.1.7) */
+static void uri_to_path(const char *uri, char *path, size_t size) {
+    size_t n = 0;
+    const char *p = uri;
+    if (strncmp(p, "file://localhost/", 17) == 0) p += 16;
+    else if (strncmp(p, "file:///", 8) == 0) p += 7;
+    else if (strncmp(p, "file:/", 6) == 0) p += 5;
+    while (*p && n + 1 < size) {
+        if (p[0] == '%' && p[1] && p[2]) {
+            char hex[3] = {p[1], p[2], 0};
+            path[n++] = (char)strtol(hex, NULL, 16);
+            p += 3;
+        } else {
+            path[n++] = *p++;
+        }
+    }
+    path[n] = 0;
+}
+
+static const char *load_tire(Tire *tire, const char *resources) {
+    char path[4096], magic[8], end[8];
+    int header[6], ok = 1, r, s;
+    double numbers[3];
+    FILE *file;
+    uri_to_path(resources, path, sizeof path - 16);
+    strcat(path, "/tire.bin");
+    file = fopen(path, "rb");
+    if (file == NULL) return "cannot open resources/tire.bin";
+    if (!read_block(file, magic, 1, 8) || memcmp(magic, "RNTIRE\0\0", 8) != 0) {
+        fclose(file);
+        return "resources/tire.bin is not a roadnoise tire file (wrong magic)";
+    }
+    if (!read_block(file, header, sizeof(int), 6) || header[0] != FORMAT_VERSION) {
+        fclose(file);
+        return "resources/tire.bin has another format version";
+    }
+    tire->n_strips = header[1];
+    tire->n_tasselli = header[2];
+    tire->n_taps = header[3];
+    tire->n_sections = header[4];
+    tire->n_rows = header[5];
+    if (tire->n_strips < 1 || tire->n_tasselli < 1 || tire->n_taps < 1 || tire->n_sections < 0 || tire->n_rows < 1 ||
+        tire->n_strips > 1000 || tire->n_tasselli > 100000 || tire->n_taps > 1000000 || tire->n_sections > 10000000 ||
+        tire->n_rows > 10000000) {
+        fclose(file);
+        return "resources/tire.bin has sizes out of range";
+    }
+    if (!read_block(file, numbers, sizeof(double), 3)) ok = 0;
+    tire->dt = numbers[0];
+    tire->speed = numbers[1];
+    tire->leading_edge = numbers[2];
+    tire->strip_y = read_doubles(file, tire->n_strips, &ok);
+    tire->direct = read_doubles(file, tire->n_tasselli + 1, &ok);
+    tire->row_strip = read_ints(file, tire->n_rows, &ok);
+    tire->row_tassello = read_ints(file, tire->n_rows, &ok);
+    tire->taps = read_doubles(file, (size_t)tire->n_rows * tire->n_taps, &ok);
+    tire->source = read_ints(file, tire->n_sections, &ok);
+    tire->e_re = read_doubles(file, tire->n_sections, &ok);
+    tire->e_im = read_doubles(file, tire->n_sections, &ok);
+    tire->b0_re = read_doubles(file, tire->n_sections, &ok);
+    tire->b0_im = read_doubles(file, tire->n_sections, &ok);
+    tire->b1_re = read_doubles(file, tire->n_sections, &ok);
+    tire->b1_im = read_doubles(file, tire->n_sections, &ok);
+    tire->factor = read_doubles(file, tire->n_sections, &ok);
+    if (!ok || !read_block(file, end, 1, 8) || memcmp(end, "RNTIREND", 8) != 0) {
+        fclose(file);
+        return "resources/tire.bin is truncated or damaged";
+    }
+    fclose(file);
+    if (!(tire->dt > 0) || !(tire->speed > 0) || !isfinite(tire->leading_edge))
+        return "resources/tire.bin: time step and speed must be > 0";
+    for (r = 0; r < tire->n_rows; r++)
+        if (tire->row_strip[r] < 0 || tire->row_strip[r] >= tire->n_strips || tire->row_tassello[r] < 0 ||
+            tire->row_tassello[r] >= tire->n_tasselli)
+            return "resources/tire.bin: a tap row names a strip or tassello out of range";
+    for (s = 0; s < tire->n_sections; s++)
+        if (tire->source[s] < 0 || tire->source[s] > tire->n_tasselli)
+            return "resources/tire.bin: a section names an input out of range";
+    return NULL;
+}
+
+/* ---- the tire's step ----------------------------------------------------------------- */
+
+static void reset_state(Tire *tire) {
+    int s;
+    for (s = 0; s < tire->n_sections; s++) tire->x_re[s] = tire->x_im[s] = tire->v_prev[s] = 0.0;
+    memset(tire->delay, 0, sizeof(double) * tire->n_strips * tire->n_taps);
+    tire->head = 0;
+    tire->n_committed = 0;
+    tire->fresh = 0;
+    tire->time = 0.0;
+}
+
+/* the strip's height m steps before the current point (m = 0: the input now set); before the first
+   committed sample the road is level with it (with the input now set if none is committed) */
+static double height(const Tire *tire, int strip, int m) {
+    if (m == 0) return tire->road[strip];
+    if (tire->n_committed == 0) return tire->road[strip];
+    if (m > tire->n_committed) return tire->first[strip];
+    return tire->delay[strip * tire->n_taps + (tire->head - m + tire->n_taps) % tire->n_taps];
+}
+
+static fmi2Status compute(Tire *tire) {
+    int i, r, m, s;
+    double fixed = 0.0, hub = 0.0;
+    if (tire->fresh) return fmi2OK;
+    for (s = 0; s < tire->n_strips; s++)
+        if (!isfinite(tire->road[s]))
+            FAIL(tire, "road_height[%d] = %g at t = %g s: the road must be finite (has the road ended?)", s + 1,
+                 tire->road[s], tire->time);
+    if (!isfinite(tire->hub)) FAIL(tire, "hub_displacement = %g at t = %g s: must be finite", tire->hub, tire->time);
+    for (i = 0; i < tire->n_tasselli; i++) tire->u[i] = 0.0;
+    for (r = 0; r < tire->n_rows; r++) {
+        const double *w = tire->taps + (size_t)r * tire->n_taps;
+        double sum = 0.0;
+        for (m = 0; m < tire->n_taps; m++) sum += w[m] * height(tire, tire->row_strip[r], m);
+        tire->u[tire->row_tassello[r]] += sum;
+    }
+    tire->u[tire->n_tasselli] = tire->hub;
+    for (i = 0; i < tire->n_tasselli; i++) fixed += tire->direct[i] * tire->u[i];
+    hub = tire->direct[tire->n_tasselli] * tire->hub;
+    for (s = 0; s < tire->n_sections; s++) {
+        double v = tire->u[tire->source[s]], re, im;
+        if (tire->n_committed == 0) {
+            re = im = 0.0;  /* rest at the first point, as python-control's forced_response */
+        } else {
+            re = tire->e_re[s] * tire->x_re[s] - tire->e_im[s] * tire->x_im[s] + tire->b0_re[s] * tire->v_prev[s] +
+                 tire->b1_re[s] * v;
+            im = tire->e_re[s] * tire->x_im[s] + tire->e_im[s] * tire->x_re[s] + tire->b0_im[s] * tire->v_prev[s] +
+                 tire->b1_im[s] * v;
+        }
+        tire->x_new_re[s] = re;
+        tire->x_new_im[s] = im;
+        if (tire->source[s] == tire->n_tasselli) hub += tire->factor[s] * re;
+        else fixed += tire->factor[s] * re;
+    }
+    if (!isfinite(fixed) || !isfinite(hub))
+        FAIL(tire, "the hub force is not finite at t = %g s (F_F = %g N, F_H = %g N)", tire->time, fixed, hub);
+    tire->fixed_hub_force = fixed;
+    tire->hub_force = hub;
+    tire->force = fixed + hub;
+    tire->fresh = 1;
+    return fmi2OK;
+}
+
+static void commit(Tire *tire) {
+    int s;
+    for (s = 0; s < tire->n_sections; s++) {
+        tire->x_re[s] = tire->x_new_re[s];
+        tire->x_im[s] = tire->x_new_im[s];
+        tire->v_prev[s] = tire->u[tire->source[s]];
+    }
+    if (tire->n_committed == 0)
+        for (s = 0; s < tire->n_strips; s++) tire->first[s] = tire->road[s];
+    tire->head = (tire->head + 1) % tire->n_taps;
+    for (s = 0; s < tire->n_strips; s++) tire->delay[s * tire->n_taps + (tire->head - 1 + tire->n_taps) % tire->n_taps] = tire->road[s];
+    tire->n_committed++;
+    tire->fresh = 0;
+}
+
+/* ---- FMI 2.0 ------------------------------------------------------------------------- */
+
+static void free_tire(Tire *tire) {
+    void *arrays[] = {tire->strip_y, tire->direct, tire->row_strip, tire->row_tassello, tire->taps, tire->source, tire->e_re,
+                      tire->e_im, tire->b0_re, tire->b0_im, tire->b1_re, tire->b1_im, tire->factor, tire->x_re,
+                      tire->x_im, tire->v_prev, tire->x_new_re, tire->x_new_im, tire->delay, tire->first,
+                      tire->road, tire->u, tire->instance_name};
+    size_t k;
+    for (k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
+    free(tire);
+}
+
+const char *fmi2GetTypesPlatform(void) { return fmi2TypesPlatform; }
+const char *fmi2GetVersion(void) { return fmi2Version; }
+
+fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nCategories,
+                               const fmi2String categories[]) {
+    (void)nCategories;
+    (void)categories;
+    ((Tire *)c)->logging = loggingOn;
+    return fmi2OK;
+}
+
+fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2String fmuGUID,
+                              fmi2String fmuResourceLocation, const fmi2CallbackFunctions *functions,
+                              fmi2Boolean visible, fmi2Boolean loggingOn) {
+    Tire *tire = (Tire *)calloc(1, sizeof(Tire));
+    const char *problem;
+    int n;
+    (void)fmuGUID;
+    (void)visible;
+    if (tire == NULL) return NULL;
+    tire->callbacks = functions;
+    tire->logging = loggingOn;
+    tire->instance_name = (char *)calloc(strlen(instanceName ? instanceName : "") + 1, 1);
+    if (instanceName) strcpy(tire->instance_name, instanceName);
+    if (fmuType != fmi2CoSimulation) {
+        log_message(tire, fmi2Error, "logStatusError", "this FMU is for co-simulation only");
+        free_tire(tire);
+        return NULL;
+    }
+    if (fmuResourceLocation == NULL) {
+        log_message(tire, fmi2Error, "logStatusError", "no resource location given");
+        free_tire(tire);
+        return NULL;
+    }
+    problem = load_tire(tire, fmuResourceLocation);
+    if (problem != NULL) {
+        log_message(tire, fmi2Error, "logStatusError", "%s (resources at %s)", problem, fmuResourceLocation);
+        free_tire(tire);
+        return NULL;
+    }
+    n = tire->n_sections > 0 ? tire->n_sections : 1;
+    tire->x_re = (double *)calloc(n, sizeof(double));
+    tire->x_im = (double *)calloc(n, sizeof(double));
+    tire->v_prev = (double *)calloc(n, sizeof(double));
+    tire->x_new_re = (double *)calloc(n, sizeof(double));
+    tire->x_new_im = (double *)calloc(n, sizeof(double));
+    tire->delay = (double *)calloc((size_t)tire->n_strips * tire->n_taps, sizeof(double));
+    tire->first = (double *)calloc(tire->n_strips, sizeof(double));
+    tire->road = (double *)calloc(tire->n_strips, sizeof(double));
+    tire->u = (double *)calloc(tire->n_tasselli + 1, sizeof(double));
+    if (!tire->x_re || !tire->x_im || !tire->v_prev || !tire->x_new_re || !tire->x_new_im || !tire->delay ||
+        !tire->first || !tire->road || !tire->u) {
+        log_message(tire, fmi2Error, "logStatusError", "out of memory");
+        free_tire(tire);
+        return NULL;
+    }
+    reset_state(tire);
+    return tire;
+}
+
+void fmi2FreeInstance(fmi2Component c) {
+    if (c != NULL) free_tire((Tire *)c);
+}
+
+fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fmi2Real tolerance,
+                               fmi2Real startTime, fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
+    (void)toleranceDefined;
+    (void)tolerance;
+    (void)stopTimeDefined;
+    (void)stopTime;
+    ((Tire *)c)->time = startTime;
+    return fmi2OK;
+}
+
+fmi2Status fmi2EnterInitializationMode(fmi2Component c) {
+    (void)c;
+    return fmi2OK;
+}
+
+fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
+    ((Tire *)c)->initialised = 1;
+    return fmi2OK;
+}
+
+fmi2Status fmi2Terminate(fmi2Component c) {
+    (void)c;
+    return fmi2OK;
+}
+
+fmi2Status fmi2Reset(fmi2Component c) {
+    reset_state((Tire *)c);
+    return fmi2OK;
+}
+
+fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Real value[]) {
+    Tire *tire = (Tire *)c;
+    size_t k;
+    for (k = 0; k < nvr; k++) {
+        fmi2ValueReference ref = vr[k];
+        if (ref <= VR_HUB_FORCE && compute(tire) != fmi2OK) return fmi2Error;
+        if (ref == VR_FORCE) value[k] = tire->force;
+        else if (ref == VR_FIXED_HUB_FORCE) value[k] = tire->fixed_hub_force;
+        else if (ref == VR_HUB_FORCE) value[k] = tire->hub_force;
+        else if (ref == VR_HUB_DISPLACEMENT) value[k] = tire->hub;
+        else if (ref == VR_SPEED) value[k] = tire->speed;
+        else if (ref == VR_STEP) value[k] = tire->dt;
+        else if (ref == VR_LEADING_EDGE) value[k] = tire->leading_edge;
+        else if (ref >= VR_ROAD && ref < VR_ROAD + (fmi2ValueReference)tire->n_strips) value[k] = tire->road[ref - VR_ROAD];
+        else if (ref >= VR_ROAD_Y && ref < VR_ROAD_Y + (fmi2ValueReference)tire->n_strips)
+            value[k] = tire->strip_y[ref - VR_ROAD_Y];
+        else FAIL(tire, "no variable has value reference %u", ref);
+    }
+    return fmi2OK;
+}
+
+fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[]) {
+    Tire *tire = (Tire *)c;
+    size_t k;
+    for (k = 0; k < nvr; k++) {
+        fmi2ValueReference ref = vr[k];
+        if (ref == VR_HUB_DISPLACEMENT) tire->hub = value[k];
+        else if (ref >= VR_ROAD && ref < VR_ROAD + (fmi2ValueReference)tire->n_strips) tire->road[ref - VR_ROAD] = value[k];
+        else if (ref == VR_SPEED) {
+            if (fabs(value[k] - tire->speed) > 1e-9 * tire->speed)
+                FAIL(tire, "speed = %g m/s: this FMU was exported for %g m/s only (the road's flow through the "
+                     "footprint is built for one speed); export one for %g m/s", value[k], tire->speed, value[k]);
+        } else if (ref == VR_STEP) {
+            if (fabs(value[k] - tire->dt) > 1e-9 * tire->dt)
+                FAIL(tire, "time_step = %g s: this FMU steps %g s exactly", value[k], tire->dt);
+        } else if (ref == VR_LEADING_EDGE) {
+            if (fabs(value[k] - tire->leading_edge) > 1e-12)
+                FAIL(tire, "leading_edge_x = %g m: fixed at %g m by the tire's footprint", value[k], tire->leading_edge);
+        } else if (ref >= VR_ROAD_Y && ref < VR_ROAD_Y + (fmi2ValueReference)tire->n_strips) {
+            if (fabs(value[k] - tire->strip_y[ref - VR_ROAD_Y]) > 1e-12)
+                FAIL(tire, "road_y[%u] = %g m: fixed at %g m by the tire's tread strips", ref - VR_ROAD_Y + 1, value[k],
+                     tire->strip_y[ref - VR_ROAD_Y]);
+        } else FAIL(tire, "value reference %u cannot be set (inputs: hub_displacement, road_height[k])", ref);
+        tire->fresh = 0;
+    }
+    return fmi2OK;
+}
+
+fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint, fmi2Real communicationStepSize,
+                      fmi2Boolean noSetFMUStatePriorToCurrentPoint) {
+    Tire *tire = (Tire *)c;
+    (void)noSetFMUStatePriorToCurrentPoint;
+    if (fabs(communicationStepSize - tire->dt) > 1e-9 * tire->dt)
+        FAIL(tire, "communication step %.9g s: this FMU steps %.9g s exactly (the exact discretisation of its "
+             "modes and the road's advance of speed x step through the footprint are built for it)",
+             communicationStepSize, tire->dt);
+    if (fabs(currentCommunicationPoint - tire->time) > 1e-6 * tire->dt)
+        FAIL(tire, "communication point %.9g s: the FMU is at %.9g s (it steps forward only)",
+             currentCommunicationPoint, tire->time);
+    if (compute(tire) != fmi2OK) return fmi2Error;
+    commit(tire);
+    tire->time = currentCommunicationPoint + communicationStepSize;
+    return fmi2OK;
+}
+
+fmi2Status fmi2CancelStep(fmi2Component c) {
+    (void)c;
+    return fmi2Error; /* every step completes before fmi2DoStep returns */
+}
+
+/* ---- what a co-simulation slave without these features answers ------------------------- */
+
+#define NOT_SUPPORTED(tire, name) FAIL((Tire *)(tire), "%s is not supported by this FMU", name)
+
+fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Integer value[]) {
+    (void)vr; (void)value;
+    if (nvr == 0) return fmi2OK;
+    NOT_SUPPORTED(c, "fmi2GetInteger");
+}
+fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Boolean value[]) {
+    (void)vr; (void)value;
+    if (nvr == 0) return fmi2OK;
+    NOT_SUPPORTED(c, "fmi2GetBoolean");
+}
+fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2String value[]) {
+    (void)vr; (void)value;
+    if (nvr == 0) return fmi2OK;
+    NOT_SUPPORTED(c, "fmi2GetString");
+}
+fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Integer value[]) {
+    (void)vr; (void)value;
+    if (nvr == 0) return fmi2OK;
+    NOT_SUPPORTED(c, "fmi2SetInteger");
+}
+fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Boolean value[]) {
+    (void)vr; (void)value;
+    if (nvr == 0) return fmi2OK;
+    NOT_SUPPORTED(c, "fmi2SetBoolean");
+}
+fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2String value[]) {
+    (void)vr; (void)value;
+    if (nvr == 0) return fmi2OK;
+    NOT_SUPPORTED(c, "fmi2SetString");
+}
+fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *FMUstate) { (void)FMUstate; NOT_SUPPORTED(c, "fmi2GetFMUstate"); }
+fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate) { (void)FMUstate; NOT_SUPPORTED(c, "fmi2SetFMUstate"); }
+fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *FMUstate) { (void)FMUstate; NOT_SUPPORTED(c, "fmi2FreeFMUstate"); }
+fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate, size_t *size) {
+    (void)FMUstate; (void)size;
+    NOT_SUPPORTED(c, "fmi2SerializedFMUstateSize");
+}
+fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byte serializedState[], size_t size) {
+    (void)FMUstate; (void)serializedState; (void)size;
+    NOT_SUPPORTED(c, "fmi2SerializeFMUstate");
+}
+fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedState[], size_t size,
+                                   fmi2FMUstate *FMUstate) {
+    (void)serializedState; (void)size; (void)FMUstate;
+    NOT_SUPPORTED(c, "fmi2DeSerializeFMUstate");
+}
+fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference vUnknown_ref[], size_t nUnknown,
+                                        const fmi2ValueReference vKnown_ref[], size_t nKnown,
+                                        const fmi2Real dvKnown[], fmi2Real dvUnknown[]) {
+    (void)vUnknown_ref; (void)nUnknown; (void)vKnown_ref; (void)nKnown; (void)dvKnown; (void)dvUnknown;
+    NOT_SUPPORTED(c, "fmi2GetDirectionalDerivative");
+}
+fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                                       const fmi2Integer order[], const fmi2Real value[]) {
+    (void)vr; (void)nvr; (void)order; (void)value;
+    NOT_SUPPORTED(c, "fmi2SetRealInputDerivatives");
+}
+fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                                        const fmi2Integer order[], fmi2Real value[]) {
+    (void)vr; (void)nvr; (void)order; (void)value;
+    NOT_SUPPORTED(c, "fmi2GetRealOutputDerivatives");
+}
+fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status *value) {
+    (void)s; (void)value;
+    NOT_SUPPORTED(c, "fmi2GetStatus");
+}
+fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real *value) {
+    if (s == fmi2LastSuccessfulTime) {
+        *value = ((Tire *)c)->time;
+        return fmi2OK;
+    }
+    NOT_SUPPORTED(c, "fmi2GetRealStatus");
+}
+fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s, fmi2Integer *value) {
+    (void)s; (void)value;
+    NOT_SUPPORTED(c, "fmi2GetIntegerStatus");
+}
+fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean *value) {
+    (void)s; (void)value;
+    NOT_SUPPORTED(c, "fmi2GetBooleanStatus");
+}
+fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind s, fmi2String *value) {
+    (void)s; (void)value;
+    NOT_SUPPORTED(c, "fmi2GetStringStatus");
+}

@@ -1,0 +1,152 @@
+"""The FMU run by fmpy against our own simulation of the same tire on the same road samples."""
+
+from __future__ import annotations
+
+import zipfile
+
+import numpy as np
+import pytest
+
+import roadnoise_utils as ru
+from roadnoise_utils.fmu.drive import FmuError, TireSlave, run_fmu
+from roadnoise_utils.rm.aggregated import road_hub_force
+from roadnoise_utils.road.cleat import cleat_profile
+
+from .conftest import SPEED, knots
+
+
+def cleat_heights(tables, n: int) -> np.ndarray:
+    """The paper's cleat (triangle, 15 x 15 mm) at the leading edge, the travel starting 0.1 m before it."""
+    return cleat_profile(0.015, 0.015)(knots(tables, n))
+
+
+def reference(exported, profile, n: int) -> np.ndarray:
+    """Our force on the same road: the road linear between the FMU's samples, through the fixed-hub tire."""
+    grid = SPEED * exported.tables.dt
+    system = ru.assemble_fixed_hub(exported.fits)
+    return road_hub_force(
+        system, exported.static, profile, SPEED, (-0.1, -0.1 + grid * (n - 1)), 1 / exported.tables.dt
+    ).force
+
+
+def test_cleat_with_the_hub_held_is_our_simulation(tire_2d):
+    """Eq. 3-4 by two codes: the FMU's delay line, taps and FOH sections in C against road_hub_force (the
+    aggregated per-track convolution) on the road linear between the same samples; round-off apart."""
+    n = int(0.6 / (SPEED * tire_2d.tables.dt))
+    heights = cleat_heights(tire_2d.tables, n)
+    s = knots(tire_2d.tables, n)
+    expected = reference(tire_2d, lambda x: np.interp(x, s, heights), n)
+    run = run_fmu(tire_2d.path, heights)
+    peak = np.max(np.abs(expected))
+    assert peak > 300.0  # the cleat's force peak, hundreds of N
+    assert np.max(np.abs(run.F_F - expected)) <= 1e-9 * peak
+    np.testing.assert_array_equal(run.F_H, 0.0)
+    np.testing.assert_array_equal(run.F_M, run.F_F)
+
+
+def test_a_laterally_varying_road_is_our_simulation(tire_3d):
+    """A 3-D road, each strip with its own heights, against road_hub_force with profile(s, y)."""
+    tables = tire_3d.tables
+    n = 600
+    rng = np.random.default_rng(7)
+    heights = np.cumsum(rng.normal(size=(tables.n_strips, n)), axis=1) * 2e-5
+    s = knots(tables, n)
+
+    def profile(x, y):
+        return np.interp(x, s, heights[int(np.argmin(np.abs(tables.strip_y - y)))])
+
+    expected = reference(tire_3d, profile, n)
+    run = run_fmu(tire_3d.path, heights)
+    assert np.max(np.abs(run.F_F - expected)) <= 1e-9 * np.max(np.abs(expected))
+
+
+def test_hub_motion_on_a_level_road_is_g_h(tire_2d):
+    """Eq. 6: with the road level, F_H is G_H's state space simulated by ru.simulate."""
+    tables = tire_2d.tables
+    n = 2000
+    hub = np.cumsum(np.random.default_rng(1).normal(size=n)) * 1e-6
+    run = run_fmu(tire_2d.path, np.zeros(n), hub)
+    road = ru.RoadInput(t=tables.dt * np.arange(n), distance=SPEED * tables.dt * np.arange(n), u=hub[None, :],
+                        speed=SPEED, description="hub displacement")  # fmt: skip
+    expected = ru.simulate(ru.rm.hub_statespace(tire_2d.hub), road).force
+    assert np.max(np.abs(run.F_H - expected)) <= 1e-9 * np.max(np.abs(expected))
+    np.testing.assert_array_equal(run.F_F, 0.0)
+
+
+def test_road_and_hub_superpose(tire_2d):
+    """Eq. 5: F_M of both inputs at once is the sum of the two runs (the tire is linear)."""
+    n = 500
+    heights = cleat_heights(tire_2d.tables, n)
+    hub = 1e-3 * np.sin(np.arange(n) * 0.05)
+    both = run_fmu(tire_2d.path, heights, hub)
+    road_only, hub_only = run_fmu(tire_2d.path, heights), run_fmu(tire_2d.path, np.zeros(n), hub)
+    scale = np.max(np.abs(both.F_M))
+    assert np.max(np.abs(both.F_M - road_only.F_M - hub_only.F_M)) <= 1e-12 * scale
+    assert np.max(np.abs(both.F_M - both.F_F - both.F_H)) <= 1e-12 * scale
+
+
+def test_another_step_is_refused_with_the_fmus_message(tire_2d):
+    with TireSlave(tire_2d.path) as slave, pytest.raises(FmuError, match="communication step .* steps .* exactly"):
+        slave.set([0.0], 0.0)
+        slave.step(2 * slave.dt)
+
+
+def test_another_speed_is_refused(tire_2d):
+    with TireSlave(tire_2d.path) as slave, pytest.raises(FmuError, match="exported for 8.33333 m/s only"):
+        slave._call(slave.slave.setReal, [4], [20.0])
+
+
+@pytest.mark.parametrize("value", [np.nan, np.inf])
+def test_a_road_that_is_not_finite_is_an_error_not_a_nan(tire_2d, value):
+    with TireSlave(tire_2d.path) as slave:
+        slave.set([0.0], 0.0)
+        slave.outputs()
+        slave.step()
+        slave.set([value], 0.0)
+        with pytest.raises(FmuError, match=r"road_height\[1\] = .* must be finite"):
+            slave.outputs()
+
+
+def test_a_non_finite_hub_is_an_error(tire_2d):
+    with TireSlave(tire_2d.path) as slave, pytest.raises(FmuError, match="hub_displacement = nan"):
+        slave.set([0.0], np.nan)
+        slave.step()
+
+
+def test_a_damaged_resource_file_fails_instantiation_with_its_reason(tire_2d, tmp_path):
+    damaged = tmp_path / "damaged.fmu"
+    with zipfile.ZipFile(tire_2d.path) as source, zipfile.ZipFile(damaged, "w") as target:
+        for item in source.infolist():
+            data = source.read(item)
+            target.writestr(item, data[:-100] if item.filename == "resources/tire.bin" else data)
+    with pytest.raises(FmuError, match="truncated or damaged"):
+        TireSlave(damaged)
+
+
+def test_reset_starts_again_at_rest(tire_2d):
+    n = 300
+    heights = cleat_heights(tire_2d.tables, n)
+    with TireSlave(tire_2d.path) as slave:
+        first = []
+        for k in range(n):
+            slave.set(heights[[k]], 0.0)
+            first.append(slave.outputs()[0])
+            slave.step()
+        slave.slave.reset()
+        slave.slave.setupExperiment(startTime=0.0)
+        slave.slave.enterInitializationMode()
+        slave.slave.exitInitializationMode()
+        slave.time = 0.0
+        again = []
+        for k in range(n):
+            slave.set(heights[[k]], 0.0)
+            again.append(slave.outputs()[0])
+            slave.step()
+    np.testing.assert_array_equal(again, first)
+
+
+def test_input_histories_of_the_wrong_shape_are_refused(tire_2d):
+    with pytest.raises(ValueError, match="road must be"):
+        run_fmu(tire_2d.path, np.zeros((3, 10)))
+    with pytest.raises(ValueError, match="hub must have one value per road sample"):
+        run_fmu(tire_2d.path, np.zeros(10), np.zeros(9))
