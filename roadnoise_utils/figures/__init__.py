@@ -19,6 +19,7 @@ from . import (
     road_input,
     superposition,
     tassello_fitting,
+    vehicle_tools,
     whole_car,
 )
 
@@ -36,5 +37,6 @@ __all__ = [
     "road_input",
     "superposition",
     "tassello_fitting",
+    "vehicle_tools",
     "whole_car",
 ]

@@ -45,9 +45,8 @@ typedef struct {
     /* the state at the last committed point */
     double *x_re, *x_im, *v_prev;  /* per section: state and drive at t_{k-1} */
     double *x_new_re, *x_new_im;   /* per section: state at t_k for the inputs now set */
-    double *delay;       /* n_strips x n_taps ring buffers of committed leading-edge heights */
-    double *first;       /* n_strips: the first committed heights (the road behind the first sample) */
-    int head, n_committed;
+    double *delay;       /* n_strips x 2 n_taps: each strip's window of heights, newest first, at [pos, pos + n_taps) */
+    int pos, n_committed;
     double *road;        /* n_strips: inputs now set */
     double hub;
     double *u;           /* n_tasselli + 1: tassello displacements and the hub's, at t_k */
@@ -188,20 +187,17 @@ static const char *load_tire(Tire *tire, const char *resources) {
 static void reset_state(Tire *tire) {
     int s;
     for (s = 0; s < tire->n_sections; s++) tire->x_re[s] = tire->x_im[s] = tire->v_prev[s] = 0.0;
-    memset(tire->delay, 0, sizeof(double) * tire->n_strips * tire->n_taps);
-    tire->head = 0;
+    memset(tire->delay, 0, sizeof(double) * 2 * tire->n_strips * tire->n_taps);
+    tire->pos = tire->n_taps;
     tire->n_committed = 0;
     tire->fresh = 0;
     tire->time = 0.0;
 }
 
-/* the strip's height m steps before the current point (m = 0: the input now set); before the first
-   committed sample the road is level with it (with the input now set if none is committed) */
-static double height(const Tire *tire, int strip, int m) {
-    if (m == 0) return tire->road[strip];
-    if (tire->n_committed == 0) return tire->road[strip];
-    if (m > tire->n_committed) return tire->first[strip];
-    return tire->delay[strip * tire->n_taps + (tire->head - m + tire->n_taps) % tire->n_taps];
+/* each strip's window: the heights m = 0 .. n_taps - 1 steps before the current point, the input now set
+   first; before the first step the road behind is level with it (the window filled with it) */
+static double *window(const Tire *tire, int strip) {
+    return tire->delay + (size_t)strip * 2 * tire->n_taps + tire->pos;
 }
 
 static fmi2Status compute(Tire *tire) {
@@ -213,12 +209,24 @@ static fmi2Status compute(Tire *tire) {
             FAIL(tire, "road_height[%d] = %g at t = %g s: the road must be finite (has the road ended?)", s + 1,
                  tire->road[s], tire->time);
     if (!isfinite(tire->hub)) FAIL(tire, "hub_displacement = %g at t = %g s: must be finite", tire->hub, tire->time);
+    for (s = 0; s < tire->n_strips; s++) {
+        double *w = window(tire, s);
+        w[0] = tire->road[s];
+        if (tire->n_committed == 0)
+            for (m = 1; m < tire->n_taps; m++) w[m] = tire->road[s];
+    }
     for (i = 0; i < tire->n_tasselli; i++) tire->u[i] = 0.0;
     for (r = 0; r < tire->n_rows; r++) {
-        const double *w = tire->taps + (size_t)r * tire->n_taps;
-        double sum = 0.0;
-        for (m = 0; m < tire->n_taps; m++) sum += w[m] * height(tire, tire->row_strip[r], m);
-        tire->u[tire->row_tassello[r]] += sum;
+        const double *taps = tire->taps + (size_t)r * tire->n_taps, *w = window(tire, tire->row_strip[r]);
+        double sum[4] = {0.0, 0.0, 0.0, 0.0}; /* four chains: the additions overlap in the pipeline */
+        for (m = 0; m + 4 <= tire->n_taps; m += 4) {
+            sum[0] += taps[m] * w[m];
+            sum[1] += taps[m + 1] * w[m + 1];
+            sum[2] += taps[m + 2] * w[m + 2];
+            sum[3] += taps[m + 3] * w[m + 3];
+        }
+        for (; m < tire->n_taps; m++) sum[0] += taps[m] * w[m];
+        tire->u[tire->row_tassello[r]] += (sum[0] + sum[1]) + (sum[2] + sum[3]);
     }
     tire->u[tire->n_tasselli] = tire->hub;
     for (i = 0; i < tire->n_tasselli; i++) fixed += tire->direct[i] * tire->u[i];
@@ -254,10 +262,14 @@ static void commit(Tire *tire) {
         tire->x_im[s] = tire->x_new_im[s];
         tire->v_prev[s] = tire->u[tire->source[s]];
     }
-    if (tire->n_committed == 0)
-        for (s = 0; s < tire->n_strips; s++) tire->first[s] = tire->road[s];
-    tire->head = (tire->head + 1) % tire->n_taps;
-    for (s = 0; s < tire->n_strips; s++) tire->delay[s * tire->n_taps + (tire->head - 1 + tire->n_taps) % tire->n_taps] = tire->road[s];
+    if (tire->pos == 0) { /* the windows reach the buffers' start: move them to the end (every n_taps steps) */
+        for (s = 0; s < tire->n_strips; s++) {
+            double *buffer = tire->delay + (size_t)s * 2 * tire->n_taps;
+            memmove(buffer + tire->n_taps + 1, buffer, sizeof(double) * (tire->n_taps - 1));
+        }
+        tire->pos = tire->n_taps + 1;
+    }
+    tire->pos--; /* the heights now set become one step old */
     tire->n_committed++;
     tire->fresh = 0;
 }
@@ -267,7 +279,7 @@ static void commit(Tire *tire) {
 static void free_tire(Tire *tire) {
     void *arrays[] = {tire->strip_y, tire->direct, tire->row_strip, tire->row_tassello, tire->taps, tire->source, tire->e_re,
                       tire->e_im, tire->b0_re, tire->b0_im, tire->b1_re, tire->b1_im, tire->factor, tire->x_re,
-                      tire->x_im, tire->v_prev, tire->x_new_re, tire->x_new_im, tire->delay, tire->first,
+                      tire->x_im, tire->v_prev, tire->x_new_re, tire->x_new_im, tire->delay,
                       tire->road, tire->u, tire->instance_name};
     size_t k;
     for (k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
@@ -320,12 +332,11 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     tire->v_prev = (double *)calloc(n, sizeof(double));
     tire->x_new_re = (double *)calloc(n, sizeof(double));
     tire->x_new_im = (double *)calloc(n, sizeof(double));
-    tire->delay = (double *)calloc((size_t)tire->n_strips * tire->n_taps, sizeof(double));
-    tire->first = (double *)calloc(tire->n_strips, sizeof(double));
+    tire->delay = (double *)calloc((size_t)2 * tire->n_strips * tire->n_taps, sizeof(double));
     tire->road = (double *)calloc(tire->n_strips, sizeof(double));
     tire->u = (double *)calloc(tire->n_tasselli + 1, sizeof(double));
     if (!tire->x_re || !tire->x_im || !tire->v_prev || !tire->x_new_re || !tire->x_new_im || !tire->delay ||
-        !tire->first || !tire->road || !tire->u) {
+        !tire->road || !tire->u) {
         log_message(tire, fmi2Error, "logStatusError", "out of memory");
         free_tire(tire);
         return NULL;
