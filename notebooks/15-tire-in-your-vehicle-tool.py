@@ -136,14 +136,13 @@ print(f"fmpy.validation.validate_fmu: {validate_fmu(str(fmu_path)) or 'nothing t
 # %%
 # The cleat flowing through the footprint, FMU against ours
 start, end = cleat.dynamic_distance  # the travel: from before the cleat reaches the footprint to its free decay
-n = int((end - start) / (speed * tables.dt))
-knots = tables.leading_edge + start + speed * tables.dt * np.arange(n)
-heights = cleat_profile(cleat.height, cleat.base, cleat.shape)(knots)
-run = run_fmu(fmu_path, heights)
 fits, hub = ru.stages.fit_tasselli(tire_name), ru.stages.fit_hub(tire_name)
 static = ru.stages.solve_static(tire_name)
+knots = tables.leading_edge + start + speed * tables.dt * np.arange(int((end - start) / (speed * tables.dt)) + 2)
+heights = cleat_profile(cleat.height, cleat.base, cleat.shape)(knots)
 ours = road_hub_force(ru.assemble_fixed_hub(fits), static, lambda s: np.interp(s, knots, heights), speed,
-                      (start, start + speed * tables.dt * (n - 1)), 1 / tables.dt)  # fmt: skip
+                      (start, end), 1 / tables.dt)  # fmt: skip
+run = run_fmu(fmu_path, heights[: ours.t.size])  # the same samples, one per step
 ru.figures.vehicle_tools.plot_fmu_against_ours(run.t, ours.force, run.F_F, "F_F, hub held")
 plt.title(f"The {tire_name} FMU on the paper's cleat at {cleat.dynamic_kmh:g} km/h against ru.road_hub_force")
 plt.show()

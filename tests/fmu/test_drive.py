@@ -24,9 +24,10 @@ def reference(exported, profile, n: int) -> np.ndarray:
     """Our force on the same road: the road linear between the FMU's samples, through the fixed-hub tire."""
     grid = SPEED * exported.tables.dt
     system = ru.assemble_fixed_hub(exported.fits)
-    return road_hub_force(
-        system, exported.static, profile, SPEED, (-0.1, -0.1 + grid * (n - 1)), 1 / exported.tables.dt
-    ).force
+    distance = (-0.1, -0.1 + grid * (n - 0.5))  # n samples, whatever the round-off of the travel's length
+    force = road_hub_force(system, exported.static, profile, SPEED, distance, 1 / exported.tables.dt).force
+    assert force.size == n
+    return force
 
 
 def test_cleat_with_the_hub_held_is_our_simulation(tire_2d):
