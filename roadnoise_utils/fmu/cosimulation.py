@@ -15,7 +15,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.linalg as sla
+from scipy.signal import cont2discrete
 
 from ..vehicle.corner import OUTPUTS
 from ..vehicle.quarter_car import QuarterCar, vehicle_statespace, with_extra_hub_mass
@@ -57,14 +57,6 @@ def leading_edge_heights(profile, slave: TireSlave, n: int, start: float = 0.0) 
     return heights
 
 
-def _zero_order_hold(a: np.ndarray, b: np.ndarray, dt: float) -> tuple[np.ndarray, np.ndarray]:
-    n = a.shape[0]
-    augmented = np.zeros((n + 1, n + 1))
-    augmented[:n, :n], augmented[:n, n:] = a * dt, b * dt
-    step = sla.expm(augmented)
-    return step[:n, :n], step[:n, n]
-
-
 def cosimulate_quarter_car(
     slave: TireSlave, vehicle: QuarterCar, tire_hub_mass: float, road: np.ndarray
 ) -> CoSimulationRun:
@@ -78,7 +70,8 @@ def cosimulate_quarter_car(
         raise ValueError(f"road must be (n_strips = {slave.n_strips}, n >= 2) heights, got shape {road.shape}")
     car = vehicle_statespace(with_extra_hub_mass(vehicle, tire_hub_mass))
     a, b, c, d = (np.asarray(m, float) for m in (car.A, car.B, car.C, car.D))
-    step_matrix, drive = _zero_order_hold(a, b, slave.dt)
+    step_matrix, drive, _, _, _ = cont2discrete((a, b, c, d), slave.dt, method="zoh")
+    drive = drive[:, 0]
     n = road.shape[1]
     state = np.zeros(a.shape[0])
     force, outputs = np.empty(n), np.empty((n, c.shape[0]))
