@@ -126,7 +126,9 @@ OCTAVE_CENTRES = (31.5, 63.0, 125.0, 250.0)
 def octave_rms(
     spectrum: tuple[np.ndarray, np.ndarray], centres=OCTAVE_CENTRES, band: tuple[float, float] = (20.0, 250.0)
 ) -> np.ndarray:
-    """:func:`band_rms` of a signal's PSD in each octave band: centre ``c`` spans ``c / sqrt(2) .. c sqrt(2)``
-    Hz, clipped to ``band`` (Hz)."""
+    """:func:`band_rms` of a signal's PSD in each octave band (unit).
+
+    The band of centre ``c`` (Hz) spans ``c / sqrt(2)`` to ``c * sqrt(2)``, clipped to ``band`` (Hz).
+    """
     edges = [(max(c / np.sqrt(2.0), band[0]), min(c * np.sqrt(2.0), band[1])) for c in centres]
     return np.array([band_rms(spectrum, edge) for edge in edges])
