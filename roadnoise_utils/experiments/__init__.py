@@ -17,6 +17,7 @@ experiment                    what it runs                                      
 :func:`check_parameters`      the notebooks' other parameters, checked up front  01-13
 :func:`export_fmu`            any tire as an FMI 2.0 co-simulation FMU           15
 :func:`fmu_quarter_car`       the road test's quarter car co-simulated with it   15
+:func:`coupling_error`        that co-simulation's error at one step             15
 ============================  =================================================  ========
 
 ``*_conditions`` functions resolve a test's defaults (an argument left at ``None`` is the
@@ -47,7 +48,7 @@ from .calibration import calibration_table
 from .cleat import CleatConditions, CleatRun, CleatTest, cleat_conditions, cleat_test
 from .corner import CornerSetup, QuarterCarTest, corner_setup, quarter_car
 from .design_sweep import SweepError, sample, sweep
-from .fmu_export import FmuQuarterCar, export_fmu, fmu_quarter_car
+from .fmu_export import FmuQuarterCar, coupling_error, export_fmu, fmu_quarter_car
 from .moving_hub import MovingHubCheck, Suspension, moving_hub_check, suspension_conditions
 from .one_sided_cleat import (
     FrozenCheck,
@@ -83,6 +84,7 @@ __all__ = [
     "RoadTestConditions",
     "Suspension",
     "calibration",
+    "coupling_error",
     "export_fmu",
     "fmu_export",
     "fmu_quarter_car",

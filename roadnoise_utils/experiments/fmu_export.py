@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 
 from ..fmu.cosimulation import CoSimulationRun, cosimulate_quarter_car, leading_edge_heights
@@ -114,17 +115,8 @@ def fmu_quarter_car(
     if texture not in test.textures:
         raise ValueError(f"texture = {texture!r}: the road test has {list(test.textures)}")
     setup = corner_setup(vehicle)
-    spectrum = test.spectra()[texture]
-    ours = run_corner(setup.sections, setup.model, texture_run(setup.static, spectrum, test, True))
-    path = export_fmu(
-        setup.tire, Path(folder) / f"{setup.tire.name.replace('/', '_')}.fmu", test.speed, test.sample_rate
-    )
-    road = stages.texture_road(
-        spectrum, texture_length(spectrum, test.duration * test.speed), test.seed, contact_tracks(setup.static)
-    )
-    with TireSlave(path) as slave:
-        heights = leading_edge_heights(road.as_3d(), slave, ours.t.size)
-        cosimulated = cosimulate_quarter_car(slave, setup.vehicle, setup.tire_hub_mass, heights)
+    path = Path(folder) / f"{setup.tire.name.replace('/', '_')}.fmu"
+    ours, cosimulated = both_runs(setup, path, test, texture)
     rows = []
     for name in ("a_hub", "a_mount"):
         mine = octave_rms(psd(ours.outputs[name], ours.sample_rate))
@@ -134,3 +126,40 @@ def fmu_quarter_car(
                 {"output": name, "octave (Hz)": centre, "ours": a, "FMU co-simulation": b, "ratio - 1": b / a - 1}
             )
     return FmuQuarterCar(setup=setup, ours=ours, cosimulated=cosimulated, octaves=pd.DataFrame(rows), fmu=path)
+
+
+def both_runs(
+    setup: CornerSetup, path: Path, test: RoadTestConditions, texture: str
+) -> tuple[CornerRun, CoSimulationRun]:
+    """Our quarter car of ``setup`` on ``texture`` of ``test``, and the same car co-simulated with the tire
+    exported to ``path`` at the test's speed and sample rate, on the same road."""
+    spectrum = test.spectra()[texture]
+    ours = run_corner(setup.sections, setup.model, texture_run(setup.static, spectrum, test, True))
+    export_fmu(setup.tire, path, test.speed, test.sample_rate)
+    road = stages.texture_road(
+        spectrum, texture_length(spectrum, test.duration * test.speed), test.seed, contact_tracks(setup.static)
+    )
+    with TireSlave(path) as slave:
+        heights = leading_edge_heights(road.as_3d(), slave, ours.t.size)
+        cosimulated = cosimulate_quarter_car(slave, setup.vehicle, setup.tire_hub_mass, heights)
+    return ours, cosimulated
+
+
+def coupling_error(
+    setup: CornerSetup, folder: str | Path, sample_rate: float, duration: float = 1.5, skip: float = 0.5
+) -> float:
+    """The co-simulation's coupling error at one step: the RMS of the co-simulated hub acceleration's
+    difference from ours over ours, on the road test's rough road after the first ``skip`` seconds (s).
+
+    The master holds the hub force over each step while the hub moves: an error of the first order in
+    the step (1 / ``sample_rate``, Hz), which halves when the step halves. The first ``skip`` seconds
+    hold the start-up transients, which differ between the two runs whatever the step (the FMU starts
+    in the steady state of the road under its leading edge, our run with the road under the footprint).
+    """
+    test = road_test_conditions(duration=duration, textures=["rough"], sample_rate=sample_rate)
+    ours, cosimulated = both_runs(setup, Path(folder) / f"car_{sample_rate:.0f}.fmu", test, "rough")
+    late = ours.t >= skip
+    if not late.any():
+        raise ValueError(f"skip = {skip:g} s must be shorter than duration = {duration:g} s")
+    difference = cosimulated.outputs["a_hub"][late] - ours.outputs["a_hub"][late]
+    return float(np.sqrt(np.mean(difference**2) / np.mean(ours.outputs["a_hub"][late] ** 2)))

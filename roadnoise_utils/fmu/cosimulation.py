@@ -63,7 +63,8 @@ def cosimulate_quarter_car(
     """Co-simulate ``vehicle`` with the tire FMU ``slave`` over ``road`` (n_strips, n) leading-edge heights (m).
 
     ``tire_hub_mass`` (kg): the FE tire's rim-side mass, added to the hub (:math:`G_H` leaves it out),
-    as in :func:`roadnoise_utils.vehicle.corner.corner_model`. The car starts at rest, as the FMU.
+    as in :func:`roadnoise_utils.vehicle.corner.corner_model`. The car starts at rest with its hub at 0, the
+    FMU in the steady state of the first road heights and that hub.
     """
     road = np.asarray(road, float)
     if road.ndim != 2 or road.shape[0] != slave.n_strips or road.shape[1] < 2:

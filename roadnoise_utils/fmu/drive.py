@@ -117,7 +117,10 @@ class TireSlave:
 
 def run_fmu(path: str | Path, road: np.ndarray, hub: np.ndarray | None = None) -> FmuRun:
     """Drive the FMU at ``path`` over ``road`` (n_strips, n) leading-edge heights (m; a 1-D road feeds every
-    strip) with the hub displacement ``hub`` (n,) (m; default held at 0); outputs at each of the n points."""
+    strip) with the hub displacement ``hub`` (n,) (m; default held at 0); outputs at each of the n points.
+
+    The FMU starts in the steady state of the first inputs (constant inputs give the static force throughout);
+    :func:`roadnoise_utils.rm.simulation.simulate` starts at rest, so the two agree for inputs starting at 0."""
     road = np.asarray(road, float)
     with TireSlave(path) as slave:
         road = np.broadcast_to(road, (slave.n_strips, road.shape[-1])) if road.ndim == 1 else road

@@ -6,8 +6,11 @@ exchange dynamic models as FMUs; :func:`write_fmu` packs the moving-hub tire of 
 
 * ``modelDescription.xml``: outputs ``F_M``, ``F_F``, ``F_H`` (N; Eq. 5), inputs
   ``hub_displacement`` (m) and ``road_height[k]`` (m, at the footprint's leading edge, one per
-  lateral strip), the ``speed`` and ``time_step`` it was built for (fixed parameters: another value
-  is refused by the FMU) and ``leading_edge_x`` (where the road heights are taken);
+  lateral strip), and as constants (causality ``local``: a tool shows them and never writes them)
+  the ``speed`` and ``time_step`` it was built for, ``leading_edge_x`` (where the road heights are
+  taken) and ``road_y[k]`` (each road input's lateral position). FMI 2.0 has no attribute for a
+  step the FMU requires: ``canHandleVariableCommunicationStepSize="false"``, the default
+  experiment's ``stepSize`` and ``time_step`` carry it, and the FMU refuses another step;
 * ``resources/tire.bin``: the tire's numbers (:mod:`.tables`);
 * ``sources/``: one C source, the same for every tire, and the FMI 2.0 headers, so that any
   platform can build it;
@@ -36,7 +39,7 @@ from .tables import TireTables, write_tables
 
 MODEL_IDENTIFIER = "roadnoise_rm_tire"
 SOURCE_DIR = Path(__file__).parent / "c"
-#: Value references of the C source (``roadnoise_rm_tire.c``): outputs, inputs, parameters, road inputs from 10.
+#: Value references of the C source (``roadnoise_rm_tire.c``): outputs, inputs, constants, road inputs from 10.
 REFERENCES = {"F_M": 0, "F_F": 1, "F_H": 2, "hub_displacement": 3, "speed": 4, "time_step": 5, "leading_edge_x": 6}
 ROAD_REFERENCE = 10
 #: Value reference of ``road_y[1]``, the lateral position of ``road_height[1]`` (then one per strip).
@@ -79,14 +82,13 @@ def model_description(tables: TireTables, name: str, guid: str) -> str:
         _variable("F_H", 2, "output", "hub force of the hub's motion, road level (G_H, Eq. 6)", "N"),
         _variable("hub_displacement", 3, "input", "vertical hub displacement, upward, from the static state", "m",
                   start="0"),
-        _variable("speed", 4, "parameter", "rolling speed the FMU was built for (another value is refused)", "m/s",
-                  variability="fixed", start=repr(float(tables.speed)), min=repr(float(tables.speed)),
-                  max=repr(float(tables.speed))),
-        _variable("time_step", 5, "parameter", "the only communication step the FMU takes", "s",
-                  variability="fixed", start=dt, min=dt, max=dt),
-        _variable("leading_edge_x", 6, "parameter",
+        _variable("speed", 4, "local", "rolling speed the FMU was built for (export another FMU for another)", "m/s",
+                  variability="constant", initial="exact", start=repr(float(tables.speed))),
+        _variable("time_step", 5, "local", "the only communication step the FMU takes", "s",
+                  variability="constant", initial="exact", start=dt),
+        _variable("leading_edge_x", 6, "local",
                   "road_height is the road this far ahead of the footprint centre, along the travel", "m",
-                  variability="fixed", start=repr(float(tables.leading_edge))),
+                  variability="constant", initial="exact", start=repr(float(tables.leading_edge))),
     ]  # fmt: skip
     for k, y in enumerate(tables.strip_y):
         where = f"at y = {y * 1e3:.1f} mm across the tread" if tables.n_strips > 1 else "uniform across the width"
@@ -96,9 +98,9 @@ def model_description(tables: TireTables, name: str, guid: str) -> str:
         )  # fmt: skip
     for k, y in enumerate(tables.strip_y):
         variables.append(
-            _variable(f"road_y[{k + 1}]", ROAD_Y_REFERENCE + k, "parameter",
+            _variable(f"road_y[{k + 1}]", ROAD_Y_REFERENCE + k, "local",
                       f"lateral position of road_height[{k + 1}] from the tread's centre line", "m",
-                      variability="fixed", start=repr(float(y)))
+                      variability="constant", initial="exact", start=repr(float(y)))
         )  # fmt: skip
     inputs = " ".join(str(i + 1) for i in [3] + list(range(7, 7 + tables.n_strips)))
     road_inputs = " ".join(str(i + 1) for i in range(7, 7 + tables.n_strips))
@@ -191,8 +193,8 @@ def write_fmu(tables: TireTables, path: str | Path, name: str = "roadnoise RM ti
         shutil.copy(SOURCE_DIR / f"{MODEL_IDENTIFIER}.c", root / "sources")
         for header in (SOURCE_DIR / "fmi2").iterdir():
             shutil.copy(header, root / "sources")
-        write_tables(tables, root / "resources" / "tire.bin")
         guid = "{" + str(uuid.uuid4()) + "}"
+        write_tables(tables, root / "resources" / "tire.bin", guid)
         (root / "modelDescription.xml").write_text(model_description(tables, name, guid), encoding="utf-8")
         folder = platform_folder()
         if binary and folder is not None:

@@ -18,7 +18,8 @@ hold (FOH) recursion :math:`x_k = e\\,x_{k-1} + b_0 v_{k-1} + b_1 v_k` (the sect
 into :math:`b_0, b_1`), output ``factor * Re(x_k)``: as :func:`.rm.simulation.simulate` runs them.
 
 **The file** (little-endian): ``b"RNTIRE\\0\\0"``; int32 ``[version, n_strips, n_tasselli, n_taps,
-n_sections, n_rows]``; float64 ``[dt, speed, leading_edge]``; float64 ``strip_y[n_strips]``; float64 ``direct[n_tasselli + 1]``;
+n_sections, n_rows]``; the FMU's GUID, ASCII, zero-padded to 64 bytes (the C source refuses a file whose
+GUID is not its model description's: resources swapped between FMUs); float64 ``[dt, speed, leading_edge]``; float64 ``strip_y[n_strips]``; float64 ``direct[n_tasselli + 1]``;
 int32 ``row_strip[n_rows]``, ``row_tassello[n_rows]``; float64 ``taps[n_rows, n_taps]``; int32
 ``source[n_sections]``; float64 ``e_re, e_im, b0_re, b0_im, b1_re, b1_im, factor`` (each
 ``[n_sections]``); ``b"RNTIREND"``.
@@ -39,7 +40,8 @@ from ..road.input import MAX_SPEED, ROAD_GRID, check_sampling, sample_rate_for, 
 from ..road.kernels import strip_kernels
 from ..tire.model import Footprint
 
-MAGIC, END, VERSION = b"RNTIRE\0\0", b"RNTIREND", 1
+MAGIC, END, VERSION = b"RNTIRE\0\0", b"RNTIREND", 2
+GUID_BYTES = 64
 #: The correlation grid is this many times finer than one step of road (:func:`.road.input.profile_input`'s default).
 OVERSAMPLE = 4
 
@@ -224,8 +226,12 @@ def tire_tables(
     )
 
 
-def write_tables(tables: TireTables, path: str | Path) -> None:
-    """Write ``tables`` to ``path`` in the layout of the module notes (what the C source reads)."""
+def write_tables(tables: TireTables, path: str | Path, guid: str) -> None:
+    """Write ``tables`` to ``path`` in the layout of the module notes (what the C source reads), for the FMU
+    whose model description has ``guid``."""
+    encoded = guid.encode("ascii")
+    if len(encoded) >= GUID_BYTES:
+        raise ValueError(f"guid = {guid!r}: at most {GUID_BYTES - 1} ASCII characters")
     header = np.array(
         [VERSION, tables.n_strips, tables.n_tasselli, tables.taps.shape[1], tables.source.size, tables.taps.shape[0]],
         "<i4",
@@ -233,6 +239,7 @@ def write_tables(tables: TireTables, path: str | Path) -> None:
     parts = [
         MAGIC,
         header.tobytes(),
+        encoded.ljust(GUID_BYTES, b"\0"),
         np.array([tables.dt, tables.speed, tables.leading_edge], "<f8").tobytes(),
         np.asarray(tables.strip_y, "<f8").tobytes(),
         np.asarray(tables.direct, "<f8").tobytes(),
@@ -247,15 +254,16 @@ def write_tables(tables: TireTables, path: str | Path) -> None:
     Path(path).write_bytes(b"".join(parts))
 
 
-def read_tables(path: str | Path) -> TireTables:
-    """Read a file of :func:`write_tables` back."""
+def read_tables(path: str | Path) -> tuple[TireTables, str]:
+    """Read a file of :func:`write_tables` back: the tables and the GUID of the FMU they belong to."""
     data = Path(path).read_bytes()
     if data[:8] != MAGIC or data[-8:] != END:
         raise ValueError(f"{path}: not a roadnoise tire file, or truncated (magic or end marker missing)")
     version, n_strips, n_tasselli, n_taps, n_sections, n_rows = np.frombuffer(data, "<i4", 6, 8)
     if version != VERSION:
         raise ValueError(f"{path}: format version {version}, this reader knows {VERSION}")
-    offset = 32
+    guid = data[32 : 32 + GUID_BYTES].rstrip(b"\0").decode("ascii")
+    offset = 32 + GUID_BYTES
 
     def take(dtype: str, count: int) -> np.ndarray:
         nonlocal offset
@@ -272,9 +280,10 @@ def read_tables(path: str | Path) -> TireTables:
     e_re, e_im, b0_re, b0_im, b1_re, b1_im, factor = (take("<f8", n_sections) for _ in range(7))
     if offset != len(data) - 8:
         raise ValueError(f"{path}: {len(data) - 8 - offset} bytes more than its header announces")
-    return TireTables(
+    tables = TireTables(
         dt=float(dt), speed=float(speed), leading_edge=float(leading_edge),
         strip_y=strip_y, direct=direct,
         row_strip=row_strip, row_tassello=row_tassello, taps=taps, source=source,
         e=e_re + 1j * e_im, b0=b0_re + 1j * b0_im, b1=b1_re + 1j * b1_im, factor=factor,
     )  # fmt: skip
+    return tables, guid

@@ -12,6 +12,7 @@ from fmpy.validation import validate_fmu
 import roadnoise_utils as ru
 from roadnoise_utils.experiments.road import road_test_conditions
 from roadnoise_utils.experiments.tire_models import tire_as_files
+from roadnoise_utils.fmu.drive import run_fmu
 from roadnoise_utils.repro.paths import REPO_ROOT
 from roadnoise_utils.rm.aggregated import road_hub_force
 from roadnoise_utils.road.cleat import cleat_profile
@@ -101,12 +102,17 @@ def test_a_texture_outside_the_test_is_refused(tmp_path):
 
 
 def test_the_book_s_three_lines_and_fmpy_loop_run_as_written(tmp_path, monkeypatch):
-    """The book's vehicle-tools page: its export lines, then its fmpy loop over a level road with the hub still."""
+    """The book's vehicle-tools page: its export lines, then its fmpy loop over a rough road with the hub moving,
+    equal to run_fmu (our own fmpy driver) sample by sample."""
     page = (REPO_ROOT / "book" / "reference" / "vehicle-tools.md").read_text()
     export, loop = [block.split("```", 1)[0] for block in page.split("```python")[1:3]]
     monkeypatch.chdir(tmp_path)
     exec(compile(export, "vehicle-tools.md", "exec"), {})  # the book's code, as written
     assert validate_fmu("tire.fmu") == [] and validate_fmu("car_tire.fmu") == []
-    namespace = {"road_heights": np.zeros(50), "hub": np.zeros(50)}
+    rng = np.random.default_rng(3)
+    road, hub = np.cumsum(rng.normal(size=(2, 300)), axis=1) * 1e-5
+    namespace = {"road_heights": road, "hub": hub}
     exec(compile(loop, "vehicle-tools.md", "exec"), namespace)
-    assert namespace["force"] == 0.0
+    expected = run_fmu("tire.fmu", road, hub).F_M
+    assert np.max(np.abs(expected)) > 10.0  # newtons: the road and the hub move the tire
+    np.testing.assert_array_equal(namespace["forces"], expected)

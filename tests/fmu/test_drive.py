@@ -2,13 +2,16 @@
 
 from __future__ import annotations
 
+import subprocess
 import zipfile
 
+import control
 import numpy as np
 import pytest
 
 import roadnoise_utils as ru
 from roadnoise_utils.fmu.drive import FmuError, TireSlave, run_fmu
+from roadnoise_utils.fmu.export import SOURCE_DIR, compiler
 from roadnoise_utils.rm.aggregated import road_hub_force
 from roadnoise_utils.road.cleat import cleat_profile
 
@@ -51,6 +54,7 @@ def test_a_laterally_varying_road_is_our_simulation(tire_3d):
     n = 600
     rng = np.random.default_rng(7)
     heights = np.cumsum(rng.normal(size=(tables.n_strips, n)), axis=1) * 2e-5
+    heights -= heights[:, :1]  # from zero, where the FMU's steady start and ours at rest agree
     s = knots(tables, n)
 
     def profile(x, y):
@@ -65,7 +69,7 @@ def test_hub_motion_on_a_level_road_is_g_h(tire_2d):
     """Eq. 6: with the road level, F_H is G_H's state space simulated by ru.simulate."""
     tables = tire_2d.tables
     n = 2000
-    hub = np.cumsum(np.random.default_rng(1).normal(size=n)) * 1e-6
+    hub = np.concatenate([[0.0], np.cumsum(np.random.default_rng(1).normal(size=n - 1)) * 1e-6])
     run = run_fmu(tire_2d.path, np.zeros(n), hub)
     road = ru.RoadInput(t=tables.dt * np.arange(n), distance=SPEED * tables.dt * np.arange(n), u=hub[None, :],
                         speed=SPEED, description="hub displacement")  # fmt: skip
@@ -86,15 +90,66 @@ def test_road_and_hub_superpose(tire_2d):
     assert np.max(np.abs(both.F_M - both.F_F - both.F_H)) <= 1e-12 * scale
 
 
+def static_gains(exported) -> tuple[float, float]:
+    """The continuous models' DC gains (python-control): F_F per metre of level road, F_H per metre of hub."""
+    road = float(np.sum(control.dcgain(ru.assemble_fixed_hub(exported.fits))))
+    return road, float(np.squeeze(control.dcgain(ru.rm.hub_statespace(exported.hub))))
+
+
+def test_constant_inputs_give_the_static_force_from_the_first_point(tire_2d):
+    """The FMU starts in the steady state of its first inputs: no start-up kick. The static force is the
+    continuous state spaces' DC gain (a level road moves every tassello by its height), against the C's
+    discrete steady state of each FOH section."""
+    road_gain, hub_gain = static_gains(tire_2d)
+    assert road_gain > 1e5 and hub_gain < -1e5  # N/m: a road pushed up compresses the tire, a hub raised relieves it
+    run = run_fmu(tire_2d.path, np.full(300, 1e-3), np.full(300, 5e-4))
+    np.testing.assert_allclose(run.F_F, road_gain * 1e-3, rtol=1e-9)
+    np.testing.assert_allclose(run.F_H, hub_gain * 5e-4, rtol=1e-9)
+
+
+def test_inputs_starting_away_from_zero_are_the_rest_response_plus_the_static_force(tire_2d):
+    """Linearity: starting in the steady state of u0 is ru.simulate's rest response to u - u0 plus the static
+    force of u0."""
+    tables = tire_2d.tables
+    n = 1500
+    hub = 2e-4 + np.cumsum(np.random.default_rng(5).normal(size=n)) * 1e-6
+    run = run_fmu(tire_2d.path, np.zeros(n), hub)
+    road = ru.RoadInput(t=tables.dt * np.arange(n), distance=SPEED * tables.dt * np.arange(n),
+                        u=(hub - hub[0])[None, :], speed=SPEED, description="hub displacement")  # fmt: skip
+    expected = ru.simulate(ru.rm.hub_statespace(tire_2d.hub), road).force + static_gains(tire_2d)[1] * hub[0]
+    assert np.max(np.abs(run.F_H - expected)) <= 1e-9 * np.max(np.abs(expected))
+
+
 def test_another_step_is_refused_with_the_fmus_message(tire_2d):
     with TireSlave(tire_2d.path) as slave, pytest.raises(FmuError, match="communication step .* steps .* exactly"):
         slave.set([0.0], 0.0)
         slave.step(2 * slave.dt)
+    with TireSlave(tire_2d.path) as slave, pytest.raises(FmuError, match="communication step nan"):
+        slave.set([0.0], 0.0)
+        slave.step(np.nan)
 
 
-def test_another_speed_is_refused(tire_2d):
+def test_a_step_off_by_a_tools_round_off_is_taken(tire_2d):
+    """A tool's accumulated or printed step may differ from the FMU's in the last digits: taken (1e-6 of it)."""
+    n = 100
+    heights = cleat_heights(tire_2d.tables, n)
+    exact = run_fmu(tire_2d.path, heights)
+    with TireSlave(tire_2d.path) as slave:
+        forces = []
+        for k in range(n):
+            slave.set(heights[[k]], 0.0)
+            forces.append(slave.outputs()[0])
+            slave.step(slave.dt * (1 + 1e-9 * (-1) ** k))
+    np.testing.assert_array_equal(forces, exact.F_M)
+    with TireSlave(tire_2d.path) as slave, pytest.raises(FmuError, match="communication step"):
+        slave.set([0.0], 0.0)
+        slave.step(slave.dt * (1 + 1e-5))
+
+
+@pytest.mark.parametrize("value", [20.0, np.nan])
+def test_another_speed_is_refused(tire_2d, value):
     with TireSlave(tire_2d.path) as slave, pytest.raises(FmuError, match="exported for 8.33333 m/s only"):
-        slave._call(slave.slave.setReal, [4], [20.0])
+        slave._call(slave.slave.setReal, [4], [value])
 
 
 @pytest.mark.parametrize("value", [np.nan, np.inf])
@@ -124,7 +179,7 @@ def test_a_damaged_resource_file_fails_instantiation_with_its_reason(tire_2d, tm
         TireSlave(damaged)
 
 
-def test_reset_starts_again_at_rest(tire_2d):
+def test_reset_starts_again_as_instantiated(tire_2d):
     n = 300
     heights = cleat_heights(tire_2d.tables, n)
     with TireSlave(tire_2d.path) as slave:
@@ -143,6 +198,11 @@ def test_reset_starts_again_at_rest(tire_2d):
             slave.set(heights[[k]], 0.0)
             again.append(slave.outputs()[0])
             slave.step()
+        slave.slave.reset()  # the inputs back at their start values (0): outputs at rest without setting them
+        slave.slave.setupExperiment(startTime=0.0)
+        slave.slave.enterInitializationMode()
+        slave.slave.exitInitializationMode()
+        np.testing.assert_array_equal(slave.outputs(), 0.0)
     np.testing.assert_array_equal(again, first)
 
 
@@ -151,3 +211,68 @@ def test_input_histories_of_the_wrong_shape_are_refused(tire_2d):
         run_fmu(tire_2d.path, np.zeros((3, 10)))
     with pytest.raises(ValueError, match="hub must have one value per road sample"):
         run_fmu(tire_2d.path, np.zeros(10), np.zeros(9))
+
+
+def rewrite_resources(source, target, change) -> None:
+    """Copy the FMU ``source`` to ``target`` with ``change(bytes) -> bytes`` applied to resources/tire.bin."""
+    with zipfile.ZipFile(source) as original, zipfile.ZipFile(target, "w") as copy:
+        for item in original.infolist():
+            data = original.read(item)
+            copy.writestr(item, change(data) if item.filename == "resources/tire.bin" else data)
+
+
+@pytest.mark.parametrize(
+    ("field", "value", "message"),
+    [(3, 999_999, "its length is not what its header announces"), (3, 2_000_000, "sizes out of range"),
+     (5, -1, "sizes out of range"), (0, 1, "another format version")],
+)  # fmt: skip
+def test_a_header_out_of_range_or_disagreeing_with_the_file_is_refused(tire_2d, tmp_path, field, value, message):
+    """Sizes that would ask for gigabytes, or that the file cannot hold, are refused before any allocation."""
+
+    def change(data: bytes) -> bytes:
+        header = np.frombuffer(data, "<i4", 6, 8).copy()
+        header[field] = value
+        return data[:8] + header.tobytes() + data[32:]
+
+    rewrite_resources(tire_2d.path, tmp_path / "bad.fmu", change)
+    with pytest.raises(FmuError, match=message):
+        TireSlave(tmp_path / "bad.fmu")
+
+
+def test_resources_of_another_fmu_are_refused(tire_2d, tire_3d, tmp_path):
+    with zipfile.ZipFile(tire_3d.path) as other:
+        foreign = other.read("resources/tire.bin")
+    rewrite_resources(tire_2d.path, tmp_path / "swapped.fmu", lambda data: foreign)
+    with pytest.raises(FmuError, match="belongs to another FMU"):
+        TireSlave(tmp_path / "swapped.fmu")
+
+
+URI_PROBE = r"""
+#include "roadnoise_rm_tire.c"
+int main(int argc, char **argv) {
+    char path[256];
+    int k;
+    for (k = 1; k < argc; k++) { uri_to_path(argv[k], path, sizeof path); printf("%s\n", path); }
+    return 0;
+}
+"""
+
+
+@pytest.mark.skipif(compiler() is None, reason="needs a C compiler")
+def test_resource_uris_become_paths_on_every_platform(tmp_path):
+    """FMI 2.0 passes the resources as a file URI: POSIX paths, Windows drive letters (RFC 8089), escapes."""
+    (tmp_path / "probe.c").write_text(URI_PROBE)
+    built = subprocess.run([compiler(), "-std=c99", f"-I{SOURCE_DIR}", f"-I{SOURCE_DIR / 'fmi2'}", "-o",
+                            str(tmp_path / "probe"), str(tmp_path / "probe.c"), "-lm"], capture_output=True, text=True)  # fmt: skip
+    assert built.returncode == 0, built.stderr
+    cases = {
+        "file:///home/a%20b/resources": "/home/a b/resources",
+        "file:/home/x/resources": "/home/x/resources",
+        "file://localhost/tmp/r": "/tmp/r",
+        "file:///C:/Users/a%20b/resources": "C:/Users/a b/resources",
+        "file://localhost/D:/fmu/resources": "D:/fmu/resources",
+        "file:///C%3A/fmu": "C:/fmu",
+        "file:///tmp/100%zz/r%2": "/tmp/100%zz/r%2",
+    }
+    done = subprocess.run([str(tmp_path / "probe"), *cases], capture_output=True, text=True, check=True)
+    assert done.stdout.splitlines() == list(cases.values())

@@ -85,15 +85,16 @@ def test_sections_are_the_moving_hub_model(paper):
 def test_the_file_reads_back_identical(paper, tmp_path):
     static, fits, hub = paper
     tables = tire_tables(fits, hub, static, SPEED, lateral=True)
-    write_tables(tables, tmp_path / "tire.bin")
-    back = read_tables(tmp_path / "tire.bin")
+    write_tables(tables, tmp_path / "tire.bin", "{guid-of-the-fmu}")
+    back, guid = read_tables(tmp_path / "tire.bin")
+    assert guid == "{guid-of-the-fmu}"
     for field in dataclasses.fields(tables):
         np.testing.assert_array_equal(getattr(back, field.name), getattr(tables, field.name), err_msg=field.name)
 
 
 def test_a_damaged_file_is_refused(paper, tmp_path):
     static, fits, hub = paper
-    write_tables(tire_tables(fits, hub, static, SPEED), tmp_path / "tire.bin")
+    write_tables(tire_tables(fits, hub, static, SPEED), tmp_path / "tire.bin", "{g}")
     data = (tmp_path / "tire.bin").read_bytes()
     (tmp_path / "cut.bin").write_bytes(data[:-20])
     with pytest.raises(ValueError, match="truncated"):
@@ -101,6 +102,8 @@ def test_a_damaged_file_is_refused(paper, tmp_path):
     (tmp_path / "long.bin").write_bytes(data[:-8] + b"12345678" + data[-8:])
     with pytest.raises(ValueError, match="more than its header"):
         read_tables(tmp_path / "long.bin")
+    with pytest.raises(ValueError, match="at most 63 ASCII"):
+        write_tables(tire_tables(fits, hub, static, SPEED), tmp_path / "tire.bin", "g" * 64)
 
 
 @pytest.mark.parametrize("speed", [0.0, -1.0, float("nan"), 101.0, "10", True])

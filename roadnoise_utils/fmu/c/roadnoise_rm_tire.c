@@ -11,8 +11,13 @@
    Every modal section is stepped by its exact first-order-hold recursion
        x_k = e x_{k-1} + b0 v_{k-1} + b1 v_k,   output factor * Re(x_k),
    which needs the input at t_k: the outputs at t_k depend on the inputs set at t_k (direct
-   feedthrough). A master sets the inputs, reads the outputs, then calls fmi2DoStep. */
+   feedthrough). A master sets the inputs, reads the outputs, then calls fmi2DoStep.
 
+   The start: the FMU starts in the steady state of the inputs set at its first point (the road
+   behind the leading edge level with its first height, every section at x = (b0 + b1) v / (1 - e)),
+   so inputs held constant give the static force from the first point on, without a transient. */
+
+#include <ctype.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -30,7 +35,10 @@
 #define VR_LEADING_EDGE 6
 #define VR_ROAD 10
 #define VR_ROAD_Y 100000
-#define FORMAT_VERSION 1
+#define FORMAT_VERSION 2
+#define GUID_BYTES 64
+/* accepted departure of a communication step from the FMU's own, relative: a tool's round-off, not another step */
+#define STEP_TOLERANCE 1e-6
 
 typedef struct {
     /* the tire's numbers (tire.bin) */
@@ -101,15 +109,19 @@ static int *read_ints(FILE *file, size_t count, int *ok) {
     return out;
 }
 
-/* "file:///a/b%20c" -> "/a/b c" (the resource location is a file URI, FMI 2.0 section 2.1.7) */
+/* The resource location, a file URI (FMI 2.0 section 2.1.7), as a path: "file:///a/b%20c" -> "/a/b c",
+   "file:///C:/a" and "file://localhost/C:/a" -> "C:/a" (a drive letter loses the slash before it). A '%'
+   not followed by two hex digits is kept as it is. */
 static void uri_to_path(const char *uri, char *path, size_t size) {
     size_t n = 0;
     const char *p = uri;
     if (strncmp(p, "file://localhost/", 17) == 0) p += 16;
     else if (strncmp(p, "file:///", 8) == 0) p += 7;
     else if (strncmp(p, "file:/", 6) == 0) p += 5;
+    if (p[0] == '/' && isalpha((unsigned char)p[1]) && (p[2] == ':' || (p[2] == '%' && p[3] == '3' && (p[4] == 'A' || p[4] == 'a'))))
+        p++;
     while (*p && n + 1 < size) {
-        if (p[0] == '%' && p[1] && p[2]) {
+        if (p[0] == '%' && isxdigit((unsigned char)p[1]) && isxdigit((unsigned char)p[2])) {
             char hex[3] = {p[1], p[2], 0};
             path[n++] = (char)strtol(hex, NULL, 16);
             p += 3;
@@ -120,15 +132,45 @@ static void uri_to_path(const char *uri, char *path, size_t size) {
     path[n] = 0;
 }
 
-static const char *load_tire(Tire *tire, const char *resources) {
-    char path[4096], magic[8], end[8];
-    int header[6], ok = 1, r, s;
+/* bytes of a tire.bin with these sizes (the layout of roadnoise_utils.fmu.tables), in double to stay exact */
+static double file_bytes(const int *header) {
+    double strips = header[1], tasselli = header[2], taps = header[3], sections = header[4], rows = header[5];
+    return 8 + 6 * 4 + GUID_BYTES + 3 * 8 + 8 * strips + 8 * (tasselli + 1) + 2 * 4 * rows + 8 * rows * taps +
+           4 * sections + 7 * 8 * sections + 8;
+}
+
+static const char *check_tire(const Tire *tire) {
+    int r, s;
+    if (!(tire->dt > 0) || !(tire->speed > 0) || !isfinite(tire->dt) || !isfinite(tire->speed) ||
+        !isfinite(tire->leading_edge))
+        return "resources/tire.bin: time step and speed must be finite and > 0";
+    for (r = 0; r < tire->n_rows; r++)
+        if (tire->row_strip[r] < 0 || tire->row_strip[r] >= tire->n_strips || tire->row_tassello[r] < 0 ||
+            tire->row_tassello[r] >= tire->n_tasselli)
+            return "resources/tire.bin: a tap row names a strip or tassello out of range";
+    for (s = 0; s < tire->n_sections; s++) {
+        if (tire->source[s] < 0 || tire->source[s] > tire->n_tasselli)
+            return "resources/tire.bin: a section names an input out of range";
+        if (!(hypot(tire->e_re[s], tire->e_im[s]) < 1.0))
+            return "resources/tire.bin: a section is not stable (|e| >= 1)";
+    }
+    return NULL;
+}
+
+static const char *load_tire(Tire *tire, const char *resources, const char *guid) {
+    char path[4096], magic[8], end[8], stored_guid[GUID_BYTES + 1];
+    int header[6], ok = 1;
+    long length;
     double numbers[3];
     FILE *file;
     uri_to_path(resources, path, sizeof path - 16);
     strcat(path, "/tire.bin");
     file = fopen(path, "rb");
     if (file == NULL) return "cannot open resources/tire.bin";
+    if (fseek(file, 0, SEEK_END) != 0 || (length = ftell(file)) < 0 || fseek(file, 0, SEEK_SET) != 0) {
+        fclose(file);
+        return "cannot read resources/tire.bin";
+    }
     if (!read_block(file, magic, 1, 8) || memcmp(magic, "RNTIRE\0\0", 8) != 0) {
         fclose(file);
         return "resources/tire.bin is not a roadnoise tire file (wrong magic)";
@@ -147,6 +189,15 @@ static const char *load_tire(Tire *tire, const char *resources) {
         tire->n_rows > 10000000) {
         fclose(file);
         return "resources/tire.bin has sizes out of range";
+    }
+    if (file_bytes(header) != (double)length) { /* before any allocation: a damaged header asks for no memory */
+        fclose(file);
+        return "resources/tire.bin is truncated or damaged (its length is not what its header announces)";
+    }
+    stored_guid[GUID_BYTES] = 0;
+    if (!read_block(file, stored_guid, 1, GUID_BYTES) || guid == NULL || strcmp(stored_guid, guid) != 0) {
+        fclose(file);
+        return "resources/tire.bin belongs to another FMU (its GUID is not the model description's)";
     }
     if (!read_block(file, numbers, sizeof(double), 3)) ok = 0;
     tire->dt = numbers[0];
@@ -170,16 +221,7 @@ static const char *load_tire(Tire *tire, const char *resources) {
         return "resources/tire.bin is truncated or damaged";
     }
     fclose(file);
-    if (!(tire->dt > 0) || !(tire->speed > 0) || !isfinite(tire->leading_edge))
-        return "resources/tire.bin: time step and speed must be > 0";
-    for (r = 0; r < tire->n_rows; r++)
-        if (tire->row_strip[r] < 0 || tire->row_strip[r] >= tire->n_strips || tire->row_tassello[r] < 0 ||
-            tire->row_tassello[r] >= tire->n_tasselli)
-            return "resources/tire.bin: a tap row names a strip or tassello out of range";
-    for (s = 0; s < tire->n_sections; s++)
-        if (tire->source[s] < 0 || tire->source[s] > tire->n_tasselli)
-            return "resources/tire.bin: a section names an input out of range";
-    return NULL;
+    return check_tire(tire);
 }
 
 /* ---- the tire's step ----------------------------------------------------------------- */
@@ -233,8 +275,11 @@ static fmi2Status compute(Tire *tire) {
     hub = tire->direct[tire->n_tasselli] * tire->hub;
     for (s = 0; s < tire->n_sections; s++) {
         double v = tire->u[tire->source[s]], re, im;
-        if (tire->n_committed == 0) {
-            re = im = 0.0;  /* rest at the first point, as python-control's forced_response */
+        if (tire->n_committed == 0) { /* the steady state of v: x = (b0 + b1) v / (1 - e) */
+            double num_re = (tire->b0_re[s] + tire->b1_re[s]) * v, num_im = (tire->b0_im[s] + tire->b1_im[s]) * v;
+            double den_re = 1.0 - tire->e_re[s], den_im = -tire->e_im[s], den = den_re * den_re + den_im * den_im;
+            re = (num_re * den_re + num_im * den_im) / den;
+            im = (num_im * den_re - num_re * den_im) / den;
         } else {
             re = tire->e_re[s] * tire->x_re[s] - tire->e_im[s] * tire->x_im[s] + tire->b0_re[s] * tire->v_prev[s] +
                  tire->b1_re[s] * v;
@@ -303,7 +348,6 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     Tire *tire = (Tire *)calloc(1, sizeof(Tire));
     const char *problem;
     int n;
-    (void)fmuGUID;
     (void)visible;
     if (tire == NULL) return NULL;
     tire->callbacks = functions;
@@ -320,7 +364,7 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
         free_tire(tire);
         return NULL;
     }
-    problem = load_tire(tire, fmuResourceLocation);
+    problem = load_tire(tire, fmuResourceLocation, fmuGUID);
     if (problem != NULL) {
         log_message(tire, fmi2Error, "logStatusError", "%s (resources at %s)", problem, fmuResourceLocation);
         free_tire(tire);
@@ -374,8 +418,12 @@ fmi2Status fmi2Terminate(fmi2Component c) {
     return fmi2OK;
 }
 
-fmi2Status fmi2Reset(fmi2Component c) {
-    reset_state((Tire *)c);
+fmi2Status fmi2Reset(fmi2Component c) { /* as after instantiation: the inputs back at their start values, 0 */
+    Tire *tire = (Tire *)c;
+    reset_state(tire);
+    memset(tire->road, 0, sizeof(double) * tire->n_strips);
+    tire->hub = 0.0;
+    tire->initialised = 0;
     return fmi2OK;
 }
 
@@ -408,17 +456,17 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
         if (ref == VR_HUB_DISPLACEMENT) tire->hub = value[k];
         else if (ref >= VR_ROAD && ref < VR_ROAD + (fmi2ValueReference)tire->n_strips) tire->road[ref - VR_ROAD] = value[k];
         else if (ref == VR_SPEED) {
-            if (fabs(value[k] - tire->speed) > 1e-9 * tire->speed)
+            if (!(fabs(value[k] - tire->speed) <= 1e-9 * tire->speed))
                 FAIL(tire, "speed = %g m/s: this FMU was exported for %g m/s only (the road's flow through the "
                      "footprint is built for one speed); export one for %g m/s", value[k], tire->speed, value[k]);
         } else if (ref == VR_STEP) {
-            if (fabs(value[k] - tire->dt) > 1e-9 * tire->dt)
+            if (!(fabs(value[k] - tire->dt) <= STEP_TOLERANCE * tire->dt))
                 FAIL(tire, "time_step = %g s: this FMU steps %g s exactly", value[k], tire->dt);
         } else if (ref == VR_LEADING_EDGE) {
-            if (fabs(value[k] - tire->leading_edge) > 1e-12)
+            if (!(fabs(value[k] - tire->leading_edge) <= 1e-12))
                 FAIL(tire, "leading_edge_x = %g m: fixed at %g m by the tire's footprint", value[k], tire->leading_edge);
         } else if (ref >= VR_ROAD_Y && ref < VR_ROAD_Y + (fmi2ValueReference)tire->n_strips) {
-            if (fabs(value[k] - tire->strip_y[ref - VR_ROAD_Y]) > 1e-12)
+            if (!(fabs(value[k] - tire->strip_y[ref - VR_ROAD_Y]) <= 1e-12))
                 FAIL(tire, "road_y[%u] = %g m: fixed at %g m by the tire's tread strips", ref - VR_ROAD_Y + 1, value[k],
                      tire->strip_y[ref - VR_ROAD_Y]);
         } else FAIL(tire, "value reference %u cannot be set (inputs: hub_displacement, road_height[k])", ref);
@@ -431,11 +479,11 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint, fmi2R
                       fmi2Boolean noSetFMUStatePriorToCurrentPoint) {
     Tire *tire = (Tire *)c;
     (void)noSetFMUStatePriorToCurrentPoint;
-    if (fabs(communicationStepSize - tire->dt) > 1e-9 * tire->dt)
+    if (!(fabs(communicationStepSize - tire->dt) <= STEP_TOLERANCE * tire->dt))
         FAIL(tire, "communication step %.9g s: this FMU steps %.9g s exactly (the exact discretisation of its "
              "modes and the road's advance of speed x step through the footprint are built for it)",
              communicationStepSize, tire->dt);
-    if (fabs(currentCommunicationPoint - tire->time) > 1e-6 * tire->dt)
+    if (!(fabs(currentCommunicationPoint - tire->time) <= STEP_TOLERANCE * tire->dt))
         FAIL(tire, "communication point %.9g s: the FMU is at %.9g s (it steps forward only)",
              currentCommunicationPoint, tire->time);
     if (compute(tire) != fmi2OK) return fmi2Error;
@@ -515,26 +563,34 @@ fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReferenc
     (void)vr; (void)nvr; (void)order; (void)value;
     NOT_SUPPORTED(c, "fmi2GetRealOutputDerivatives");
 }
+/* a status this FMU does not keep: fmi2Discard, as FMI 2.0 asks (section 4.2.3); every step completes in
+   fmi2DoStep, so fmi2LastSuccessfulTime is the only status it answers */
+#define NO_STATUS(tire, name)                                                                         \
+    do {                                                                                              \
+        log_message((Tire *)(tire), fmi2Discard, "logStatusError", "%s: this FMU keeps no such status", name); \
+        return fmi2Discard;                                                                           \
+    } while (0)
+
 fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status *value) {
     (void)s; (void)value;
-    NOT_SUPPORTED(c, "fmi2GetStatus");
+    NO_STATUS(c, "fmi2GetStatus");
 }
 fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real *value) {
     if (s == fmi2LastSuccessfulTime) {
         *value = ((Tire *)c)->time;
         return fmi2OK;
     }
-    NOT_SUPPORTED(c, "fmi2GetRealStatus");
+    NO_STATUS(c, "fmi2GetRealStatus");
 }
 fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s, fmi2Integer *value) {
     (void)s; (void)value;
-    NOT_SUPPORTED(c, "fmi2GetIntegerStatus");
+    NO_STATUS(c, "fmi2GetIntegerStatus");
 }
 fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean *value) {
     (void)s; (void)value;
-    NOT_SUPPORTED(c, "fmi2GetBooleanStatus");
+    NO_STATUS(c, "fmi2GetBooleanStatus");
 }
 fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind s, fmi2String *value) {
     (void)s; (void)value;
-    NOT_SUPPORTED(c, "fmi2GetStringStatus");
+    NO_STATUS(c, "fmi2GetStringStatus");
 }
