@@ -6,9 +6,9 @@ exchange dynamic models as FMUs; :func:`write_fmu` packs the moving-hub tire of 
 
 * ``modelDescription.xml``: outputs ``F_M``, ``F_F``, ``F_H`` (N; Eq. 5), inputs
   ``hub_displacement`` (m) and ``road_height[k]`` (m, at the footprint's leading edge, one per
-  lateral strip), and as constants (causality ``local``: a tool shows them and never writes them)
-  the ``speed`` and ``time_step`` it was built for, ``leading_edge_x`` (where the road heights are
-  taken) and ``road_y[k]`` (each road input's lateral position). FMI 2.0 has no attribute for a
+  lateral strip), and as constant outputs (a master reads them to build the road inputs, and
+  never writes them) the ``speed`` and ``time_step`` it was built for, ``leading_edge_x`` (where
+  the road heights are taken) and ``road_y[k]`` (each road input's lateral position). FMI 2.0 has no attribute for a
   step the FMU requires: ``canHandleVariableCommunicationStepSize="false"``, the default
   experiment's ``stepSize`` and ``time_step`` carry it, and the FMU refuses another step;
 * ``resources/tire.bin``: the tire's numbers (:mod:`.tables`);
@@ -82,11 +82,11 @@ def model_description(tables: TireTables, name: str, guid: str) -> str:
         _variable("F_H", 2, "output", "hub force of the hub's motion, road level (G_H, Eq. 6)", "N"),
         _variable("hub_displacement", 3, "input", "vertical hub displacement, upward, from the static state", "m",
                   start="0"),
-        _variable("speed", 4, "local", "rolling speed the FMU was built for (export another FMU for another)", "m/s",
+        _variable("speed", 4, "output", "rolling speed the FMU was built for (export another FMU for another)", "m/s",
                   variability="constant", initial="exact", start=repr(float(tables.speed))),
-        _variable("time_step", 5, "local", "the only communication step the FMU takes", "s",
+        _variable("time_step", 5, "output", "the only communication step the FMU takes", "s",
                   variability="constant", initial="exact", start=dt),
-        _variable("leading_edge_x", 6, "local",
+        _variable("leading_edge_x", 6, "output",
                   "road_height is the road this far ahead of the footprint centre, along the travel", "m",
                   variability="constant", initial="exact", start=repr(float(tables.leading_edge))),
     ]  # fmt: skip
@@ -98,7 +98,7 @@ def model_description(tables: TireTables, name: str, guid: str) -> str:
         )  # fmt: skip
     for k, y in enumerate(tables.strip_y):
         variables.append(
-            _variable(f"road_y[{k + 1}]", ROAD_Y_REFERENCE + k, "local",
+            _variable(f"road_y[{k + 1}]", ROAD_Y_REFERENCE + k, "output",
                       f"lateral position of road_height[{k + 1}] from the tread's centre line", "m",
                       variability="constant", initial="exact", start=repr(float(y)))
         )  # fmt: skip
@@ -106,6 +106,8 @@ def model_description(tables: TireTables, name: str, guid: str) -> str:
     road_inputs = " ".join(str(i + 1) for i in range(7, 7 + tables.n_strips))
     structure = [f'      <Unknown index="1" dependencies="{inputs}"/>', f'      <Unknown index="2" dependencies="{road_inputs}"/>',
                  '      <Unknown index="3" dependencies="4"/>']  # fmt: skip
+    constants = [5, 6, 7] + list(range(8 + tables.n_strips, 8 + 2 * tables.n_strips))  # speed .. road_y[n]
+    outputs = structure + [f'      <Unknown index="{i}" dependencies=""/>' for i in constants]
     description = (
         f"Moving-hub RM tire (Belluzzo et al. 2002, Eq. 7): {tables.n_tasselli} tasselli, {tables.n_states} states, "
         f"{tables.speed:g} m/s, step {tables.dt:.6g} s. Set the inputs, read the outputs, then step (direct feedthrough)."
@@ -129,14 +131,15 @@ def model_description(tables: TireTables, name: str, guid: str) -> str:
             '    <Unit name="m/s"><BaseUnit m="1" s="-1"/></Unit>',
             '    <Unit name="s"><BaseUnit s="1"/></Unit>',
             "  </UnitDefinitions>",
-            '  <LogCategories>\n    <Category name="logStatusError"/>\n  </LogCategories>',
+            '  <LogCategories>\n    <Category name="logStatusDiscard"/>\n    <Category name="logStatusError"/>\n'
+            "  </LogCategories>",
             f'  <DefaultExperiment startTime="0" stepSize="{dt}"/>',
             "  <ModelVariables>",
             *variables,
             "  </ModelVariables>",
             "  <ModelStructure>",
             "    <Outputs>",
-            *structure,
+            *outputs,
             "    </Outputs>",
             "    <InitialUnknowns>",
             *structure,

@@ -262,7 +262,10 @@ def read_tables(path: str | Path) -> tuple[TireTables, str]:
     version, n_strips, n_tasselli, n_taps, n_sections, n_rows = np.frombuffer(data, "<i4", 6, 8)
     if version != VERSION:
         raise ValueError(f"{path}: format version {version}, this reader knows {VERSION}")
-    guid = data[32 : 32 + GUID_BYTES].rstrip(b"\0").decode("ascii")
+    try:
+        guid = data[32 : 32 + GUID_BYTES].rstrip(b"\0").decode("ascii")
+    except UnicodeDecodeError:
+        raise ValueError(f"{path}: its GUID field is not ASCII: not a roadnoise tire file, or damaged") from None
     offset = 32 + GUID_BYTES
 
     def take(dtype: str, count: int) -> np.ndarray:

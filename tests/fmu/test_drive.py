@@ -139,7 +139,7 @@ def test_a_step_off_by_a_tools_round_off_is_taken(tire_2d):
         for k in range(n):
             slave.set(heights[[k]], 0.0)
             forces.append(slave.outputs()[0])
-            slave.step(slave.dt * (1 + 1e-9 * (-1) ** k))
+            slave.step(slave.dt * (1 + 1e-7 * (-1) ** k))
     np.testing.assert_array_equal(forces, exact.F_M)
     with TireSlave(tire_2d.path) as slave, pytest.raises(FmuError, match="communication step"):
         slave.set([0.0], 0.0)
@@ -150,6 +150,37 @@ def test_a_step_off_by_a_tools_round_off_is_taken(tire_2d):
 def test_another_speed_is_refused(tire_2d, value):
     with TireSlave(tire_2d.path) as slave, pytest.raises(FmuError, match="exported for 8.33333 m/s only"):
         slave._call(slave.slave.setReal, [4], [value])
+
+
+@pytest.mark.parametrize(("name", "message"), [("time_step", "steps .* exactly"), ("leading_edge_x", "fixed at"),
+                                               ("road_y[1]", "fixed at")])  # fmt: skip
+def test_the_other_constants_refuse_another_value_and_nan(tire_2d, name, message):
+    with TireSlave(tire_2d.path) as slave:
+        reference = slave.variables[name].valueReference
+        own = float(slave.variables[name].start)
+        slave._call(slave.slave.setReal, [reference], [own])  # its own value: taken
+        for value in (own + 1e-3, np.nan):
+            with pytest.raises(FmuError, match=message):
+                slave._call(slave.slave.setReal, [reference], [value])
+
+
+def test_a_step_before_initialisation_is_refused(tire_2d):
+    with TireSlave(tire_2d.path) as slave:
+        slave.slave.reset()
+        with pytest.raises(FmuError, match="before fmi2ExitInitializationMode"):
+            slave.step()
+
+
+def test_a_status_the_fmu_does_not_keep_is_discarded_and_the_last_time_is_kept(tire_2d):
+    from fmpy.fmi2 import fmi2DoStepStatus, fmi2LastSuccessfulTime
+
+    with TireSlave(tire_2d.path) as slave:
+        slave.set([0.0], 0.0)
+        slave.step()
+        assert slave.slave.getRealStatus(fmi2LastSuccessfulTime) == slave.dt
+        with pytest.raises(Exception, match=r"status 2 \(discard\)"):
+            slave.slave.getStatus(fmi2DoStepStatus)
+        assert slave.messages[-1] == "fmi2GetStatus: this FMU keeps no such status"
 
 
 @pytest.mark.parametrize("value", [np.nan, np.inf])
@@ -198,6 +229,7 @@ def test_reset_starts_again_as_instantiated(tire_2d):
             slave.set(heights[[k]], 0.0)
             again.append(slave.outputs()[0])
             slave.step()
+        slave.set([1e-3], 5e-4)  # inputs away from their start values when the reset comes
         slave.slave.reset()  # the inputs back at their start values (0): outputs at rest without setting them
         slave.slave.setupExperiment(startTime=0.0)
         slave.slave.enterInitializationMode()
@@ -252,27 +284,55 @@ URI_PROBE = r"""
 int main(int argc, char **argv) {
     char path[256];
     int k;
-    for (k = 1; k < argc; k++) { uri_to_path(argv[k], path, sizeof path); printf("%s\n", path); }
+    for (k = 1; k < argc; k++) printf("%s\n", uri_to_path(argv[k], path, sizeof path) ? path : "(too long)");
     return 0;
 }
 """
 
 
+def uri_paths(folder, uris: list[str], drive_letters: bool) -> list[str]:
+    """``uri_to_path`` of the C source on ``uris``, compiled with the Windows rule or the POSIX one."""
+    (folder / "probe.c").write_text(URI_PROBE)
+    probe = folder / f"probe_{int(drive_letters)}"
+    built = subprocess.run([compiler(), "-std=c99", f"-DROADNOISE_DRIVE_LETTERS={int(drive_letters)}",
+                            f"-I{SOURCE_DIR}", f"-I{SOURCE_DIR / 'fmi2'}", "-o", str(probe), str(folder / "probe.c"),
+                            "-lm"], capture_output=True, text=True)  # fmt: skip
+    assert built.returncode == 0, built.stderr
+    return subprocess.run([str(probe), *uris], capture_output=True, text=True, check=True).stdout.splitlines()
+
+
 @pytest.mark.skipif(compiler() is None, reason="needs a C compiler")
 def test_resource_uris_become_paths_on_every_platform(tmp_path):
-    """FMI 2.0 passes the resources as a file URI: POSIX paths, Windows drive letters (RFC 8089), escapes."""
-    (tmp_path / "probe.c").write_text(URI_PROBE)
-    built = subprocess.run([compiler(), "-std=c99", f"-I{SOURCE_DIR}", f"-I{SOURCE_DIR / 'fmi2'}", "-o",
-                            str(tmp_path / "probe"), str(tmp_path / "probe.c"), "-lm"], capture_output=True, text=True)  # fmt: skip
-    assert built.returncode == 0, built.stderr
-    cases = {
+    """FMI 2.0 passes the resources as a file URI (RFC 8089): POSIX paths, escapes, and on Windows drive
+    letters; a path too long for the buffer is refused, not cut."""
+    both = {
         "file:///home/a%20b/resources": "/home/a b/resources",
         "file:/home/x/resources": "/home/x/resources",
         "file://localhost/tmp/r": "/tmp/r",
+        "file:///tmp/100%zz/r%2": "/tmp/100%zz/r%2",
+        "file:///" + "a" * 300: "(too long)",
+    }
+    windows = {
         "file:///C:/Users/a%20b/resources": "C:/Users/a b/resources",
         "file://localhost/D:/fmu/resources": "D:/fmu/resources",
         "file:///C%3A/fmu": "C:/fmu",
-        "file:///tmp/100%zz/r%2": "/tmp/100%zz/r%2",
+        "file://C:/fmu": "C:/fmu",
     }
-    done = subprocess.run([str(tmp_path / "probe"), *cases], capture_output=True, text=True, check=True)
-    assert done.stdout.splitlines() == list(cases.values())
+    posix = {"file:///a:b/x": "/a:b/x", "file:///a%3Ab/x": "/a:b/x"}
+    assert uri_paths(tmp_path, [*both, *windows], True) == [*both.values(), *windows.values()]
+    assert uri_paths(tmp_path, [*both, *posix], False) == [*both.values(), *posix.values()]
+
+
+def test_a_road_input_that_drives_no_tassello_is_refused(tire_3d, tmp_path):
+    """Every strip has a tap row: the delay line (16 n_strips n_taps bytes) then stays within twice the file."""
+
+    def change(data: bytes) -> bytes:
+        header = np.frombuffer(data, "<i4", 6, 8)
+        rows_at = 32 + 64 + 24 + 8 * header[1] + 8 * (header[2] + 1)
+        row_strip = np.frombuffer(data, "<i4", header[5], rows_at).copy()
+        row_strip[row_strip == 1] = 0  # strip 2's rows moved to strip 1: strip 2 drives nothing
+        return data[:rows_at] + row_strip.tobytes() + data[rows_at + row_strip.nbytes :]
+
+    rewrite_resources(tire_3d.path, tmp_path / "bad.fmu", change)
+    with pytest.raises(FmuError, match="drives no tassello"):
+        TireSlave(tmp_path / "bad.fmu")

@@ -44,8 +44,8 @@ def test_the_description_names_each_input_and_output_with_its_unit(tire_3d):
     assert len(roads) == tables.n_strips > 1
     assert all(variables[name].get("causality") == "input" for name in roads + ["hub_displacement"])
     constants = ["speed", "time_step", "leading_edge_x"] + [f"road_y[{k + 1}]" for k in range(tables.n_strips)]
-    for name in constants:  # what the FMU was built for: shown to a tool, never written by it
-        assert (variables[name].get("causality"), variables[name].get("variability")) == ("local", "constant")
+    for name in constants:  # what the FMU was built for: read by a master, never written
+        assert (variables[name].get("causality"), variables[name].get("variability")) == ("output", "constant")
     assert float(variables["speed"].find("Real").get("start")) == tables.speed
     assert float(variables["time_step"].find("Real").get("start")) == tables.dt
     assert float(root.find("DefaultExperiment").get("stepSize")) == tables.dt

@@ -102,6 +102,9 @@ def test_a_damaged_file_is_refused(paper, tmp_path):
     (tmp_path / "long.bin").write_bytes(data[:-8] + b"12345678" + data[-8:])
     with pytest.raises(ValueError, match="more than its header"):
         read_tables(tmp_path / "long.bin")
+    (tmp_path / "guid.bin").write_bytes(data[:32] + b"\xff" * 64 + data[96:])
+    with pytest.raises(ValueError, match="GUID field is not ASCII"):
+        read_tables(tmp_path / "guid.bin")
     with pytest.raises(ValueError, match="at most 63 ASCII"):
         write_tables(tire_tables(fits, hub, static, SPEED), tmp_path / "tire.bin", "g" * 64)
 

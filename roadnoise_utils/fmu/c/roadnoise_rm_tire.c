@@ -26,6 +26,28 @@
 
 #include "fmi2Functions.h"
 
+/* A resource URI's path starts with a drive letter ("file:///C:/a" -> "C:/a") on Windows only; a POSIX
+   path such as "/a:b" keeps its slash. Defined to 1 or 0 from outside to test either rule anywhere. */
+#ifndef ROADNOISE_DRIVE_LETTERS
+#ifdef _WIN32
+#define ROADNOISE_DRIVE_LETTERS 1
+#else
+#define ROADNOISE_DRIVE_LETTERS 0
+#endif
+#endif
+
+#ifdef _WIN32
+#include <windows.h>
+/* the path is UTF-8 (the URI's %-escapes decoded); Windows opens it through its wide-character API */
+static FILE *open_file(const char *path) {
+    wchar_t wide[4096];
+    if (MultiByteToWideChar(CP_UTF8, MB_ERR_INVALID_CHARS, path, -1, wide, 4096) == 0) return NULL;
+    return _wfopen(wide, L"rb");
+}
+#else
+static FILE *open_file(const char *path) { return fopen(path, "rb"); }
+#endif
+
 #define VR_FORCE 0
 #define VR_FIXED_HUB_FORCE 1
 #define VR_HUB_FORCE 2
@@ -109,17 +131,22 @@ static int *read_ints(FILE *file, size_t count, int *ok) {
     return out;
 }
 
-/* The resource location, a file URI (FMI 2.0 section 2.1.7), as a path: "file:///a/b%20c" -> "/a/b c",
-   "file:///C:/a" and "file://localhost/C:/a" -> "C:/a" (a drive letter loses the slash before it). A '%'
-   not followed by two hex digits is kept as it is. */
-static void uri_to_path(const char *uri, char *path, size_t size) {
+static int is_drive(const char *p) { /* "C:" or "C%3A" */
+    return isalpha((unsigned char)p[0]) &&
+           (p[1] == ':' || (p[1] == '%' && p[2] == '3' && (p[3] == 'A' || p[3] == 'a')));
+}
+
+/* The resource location, a file URI (FMI 2.0 section 2.1.7), as a path: "file:///a/b%20c" -> "/a/b c"; on
+   Windows "file:///C:/a", "file://localhost/C:/a" and the malformed "file://C:/a" -> "C:/a". A '%' not
+   followed by two hex digits is kept as it is. Returns 0 if the path does not fit in size bytes. */
+static int uri_to_path(const char *uri, char *path, size_t size) {
     size_t n = 0;
     const char *p = uri;
     if (strncmp(p, "file://localhost/", 17) == 0) p += 16;
     else if (strncmp(p, "file:///", 8) == 0) p += 7;
+    else if (ROADNOISE_DRIVE_LETTERS && strncmp(p, "file://", 7) == 0 && is_drive(p + 7)) p += 7;
     else if (strncmp(p, "file:/", 6) == 0) p += 5;
-    if (p[0] == '/' && isalpha((unsigned char)p[1]) && (p[2] == ':' || (p[2] == '%' && p[3] == '3' && (p[4] == 'A' || p[4] == 'a'))))
-        p++;
+    if (ROADNOISE_DRIVE_LETTERS && p[0] == '/' && is_drive(p + 1)) p++;
     while (*p && n + 1 < size) {
         if (p[0] == '%' && isxdigit((unsigned char)p[1]) && isxdigit((unsigned char)p[2])) {
             char hex[3] = {p[1], p[2], 0};
@@ -130,6 +157,7 @@ static void uri_to_path(const char *uri, char *path, size_t size) {
         }
     }
     path[n] = 0;
+    return *p == 0;
 }
 
 /* bytes of a tire.bin with these sizes (the layout of roadnoise_utils.fmu.tables), in double to stay exact */
@@ -148,6 +176,12 @@ static const char *check_tire(const Tire *tire) {
         if (tire->row_strip[r] < 0 || tire->row_strip[r] >= tire->n_strips || tire->row_tassello[r] < 0 ||
             tire->row_tassello[r] >= tire->n_tasselli)
             return "resources/tire.bin: a tap row names a strip or tassello out of range";
+    for (r = 1; r < tire->n_rows; r++)
+        if (tire->row_strip[r] < tire->row_strip[r - 1] || tire->row_strip[r] > tire->row_strip[r - 1] + 1)
+            return "resources/tire.bin: the tap rows are not in the order of their strips, or a road input drives "
+                   "no tassello";
+    if (tire->row_strip[0] != 0 || tire->row_strip[tire->n_rows - 1] != tire->n_strips - 1)
+        return "resources/tire.bin: a road input drives no tassello";
     for (s = 0; s < tire->n_sections; s++) {
         if (tire->source[s] < 0 || tire->source[s] > tire->n_tasselli)
             return "resources/tire.bin: a section names an input out of range";
@@ -163,9 +197,9 @@ static const char *load_tire(Tire *tire, const char *resources, const char *guid
     long length;
     double numbers[3];
     FILE *file;
-    uri_to_path(resources, path, sizeof path - 16);
+    if (!uri_to_path(resources, path, sizeof path - 16)) return "the resource location is too long";
     strcat(path, "/tire.bin");
-    file = fopen(path, "rb");
+    file = open_file(path);
     if (file == NULL) return "cannot open resources/tire.bin";
     if (fseek(file, 0, SEEK_END) != 0 || (length = ftell(file)) < 0 || fseek(file, 0, SEEK_SET) != 0) {
         fclose(file);
@@ -186,11 +220,13 @@ static const char *load_tire(Tire *tire, const char *resources, const char *guid
     tire->n_rows = header[5];
     if (tire->n_strips < 1 || tire->n_tasselli < 1 || tire->n_taps < 1 || tire->n_sections < 0 || tire->n_rows < 1 ||
         tire->n_strips > 1000 || tire->n_tasselli > 100000 || tire->n_taps > 1000000 || tire->n_sections > 10000000 ||
-        tire->n_rows > 10000000) {
+        tire->n_rows > 10000000 || tire->n_rows < tire->n_strips) { /* every strip drives a tap row */
         fclose(file);
         return "resources/tire.bin has sizes out of range";
     }
-    if (file_bytes(header) != (double)length) { /* before any allocation: a damaged header asks for no memory */
+    /* before any allocation: with every strip in a tap row, the largest array (the delay line, 16 n_strips n_taps
+       bytes) is at most twice the file's length, so a damaged header cannot ask for much more than the file */
+    if (file_bytes(header) != (double)length) {
         fclose(file);
         return "resources/tire.bin is truncated or damaged (its length is not what its header announces)";
     }
@@ -479,6 +515,7 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint, fmi2R
                       fmi2Boolean noSetFMUStatePriorToCurrentPoint) {
     Tire *tire = (Tire *)c;
     (void)noSetFMUStatePriorToCurrentPoint;
+    if (!tire->initialised) FAIL(tire, "fmi2DoStep before fmi2ExitInitializationMode");
     if (!(fabs(communicationStepSize - tire->dt) <= STEP_TOLERANCE * tire->dt))
         FAIL(tire, "communication step %.9g s: this FMU steps %.9g s exactly (the exact discretisation of its "
              "modes and the road's advance of speed x step through the footprint are built for it)",
@@ -567,7 +604,7 @@ fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReferenc
    fmi2DoStep, so fmi2LastSuccessfulTime is the only status it answers */
 #define NO_STATUS(tire, name)                                                                         \
     do {                                                                                              \
-        log_message((Tire *)(tire), fmi2Discard, "logStatusError", "%s: this FMU keeps no such status", name); \
+        log_message((Tire *)(tire), fmi2Discard, "logStatusDiscard", "%s: this FMU keeps no such status", name); \
         return fmi2Discard;                                                                           \
     } while (0)
 
