@@ -28,7 +28,7 @@
 # as a co-simulation FMU, checks it with a standard FMU runner (fmpy) against our own
 # simulation, and drives a quarter car with it the way a vehicle tool would.
 #
-# **What the FMU contains.** One small C source, the same for every tire, reads the tire's
+# **What the FMU contains.** One small C program, the same for every tire, reads the tire's
 # numbers from `resources/tire.bin` when it is instantiated: the modal sections of Eq. 7
 # (each pole pair with its exact first-order-hold recursion, as `ru.simulate` steps it) and the
 # footprint's road taps. It is compiled with the machine's C compiler at export, and the source

@@ -12,7 +12,7 @@ exchange dynamic models as FMUs; :func:`write_fmu` packs the moving-hub tire of 
   step the FMU requires: ``canHandleVariableCommunicationStepSize="false"``, the default
   experiment's ``stepSize`` and ``time_step`` carry it, and the FMU refuses another step;
 * ``resources/tire.bin``: the tire's numbers (:mod:`.tables`);
-* ``sources/``: one C source, the same for every tire, and the FMI 2.0 headers, so that any
+* ``sources/``: the C sources, the same for every tire, and the FMI 2.0 headers, so that any
   platform can build it;
 * ``binaries/<platform>/roadnoise_rm_tire.<so|dylib|dll>``: that source compiled with the
   platform's C compiler at export (``cc``, or ``CC``); without one, a source-only FMU and a warning.
@@ -39,6 +39,8 @@ from .tables import TireTables, write_tables
 
 MODEL_IDENTIFIER = "roadnoise_rm_tire"
 SOURCE_DIR = Path(__file__).parent / "c"
+#: The C sources compiled into the FMU's binary (the model, then the FMI functions it does not support).
+SOURCES = (f"{MODEL_IDENTIFIER}.c", "fmi2_unsupported.c")
 #: Value references of the C source (``roadnoise_rm_tire.c``): outputs, inputs, constants, road inputs from 10.
 REFERENCES = {"F_M": 0, "F_F": 1, "F_H": 2, "hub_displacement": 3, "speed": 4, "time_step": 5, "leading_edge_x": 6}
 ROAD_REFERENCE = 10
@@ -123,7 +125,9 @@ def model_description(tables: TireTables, name: str, guid: str) -> str:
             'canInterpolateInputs="false" canBeInstantiatedOnlyOncePerProcess="false" '
             'canNotUseMemoryManagementFunctions="true" canGetAndSetFMUstate="false" canSerializeFMUstate="false" '
             'providesDirectionalDerivative="false">',
-            f'    <SourceFiles>\n      <File name="{MODEL_IDENTIFIER}.c"/>\n    </SourceFiles>',
+            "    <SourceFiles>",
+            *(f'      <File name="{source}"/>' for source in SOURCES),
+            "    </SourceFiles>",
             "  </CoSimulation>",
             "  <UnitDefinitions>",
             '    <Unit name="m"><BaseUnit m="1"/></Unit>',
@@ -152,7 +156,7 @@ def model_description(tables: TireTables, name: str, guid: str) -> str:
 
 
 def compile_binary(sources: Path, target: Path) -> str | None:
-    """Compile the C source in ``sources`` to the shared library ``target``; the compiler's complaint, or None."""
+    """Compile the C sources (:data:`SOURCES`) in ``sources`` to the shared library ``target``; the compiler's complaint, or None."""
     cc = compiler()
     if cc is None:
         return "no C compiler found (set CC or install cc/gcc/clang)"
@@ -164,7 +168,7 @@ def compile_binary(sources: Path, target: Path) -> str | None:
         f"-I{sources}",
         "-o",
         str(target),
-        str(sources / f"{MODEL_IDENTIFIER}.c"),
+        *(str(sources / source) for source in SOURCES),
     ]
     if platform.system() != "Windows":
         command[2:2] = ["-fPIC"]
@@ -193,7 +197,8 @@ def write_fmu(tables: TireTables, path: str | Path, name: str = "roadnoise RM ti
         root = Path(work) / "fmu"
         (root / "resources").mkdir(parents=True)
         (root / "sources").mkdir()
-        shutil.copy(SOURCE_DIR / f"{MODEL_IDENTIFIER}.c", root / "sources")
+        for source in [*SOURCES, f"{MODEL_IDENTIFIER}.h"]:
+            shutil.copy(SOURCE_DIR / source, root / "sources")
         for header in (SOURCE_DIR / "fmi2").iterdir():
             shutil.copy(header, root / "sources")
         guid = "{" + str(uuid.uuid4()) + "}"

@@ -27,11 +27,18 @@ def test_the_archive_holds_description_resources_sources_and_binary(tire_3d):
         "modelDescription.xml",
         "resources/tire.bin",
         f"sources/{MODEL_IDENTIFIER}.c",
+        f"sources/{MODEL_IDENTIFIER}.h",
+        "sources/fmi2_unsupported.c",
         "sources/fmi2Functions.h",
         "sources/fmi2FunctionTypes.h",
         "sources/fmi2TypesPlatform.h",
         f"binaries/{platform_folder()}/{MODEL_IDENTIFIER}{suffix}",
     } <= names
+    root = ET.fromstring(zipfile.ZipFile(tire_3d.path).read("modelDescription.xml"))
+    listed = {file.get("name") for file in root.iter("File")}  # what a tool compiles: every C source shipped
+    assert listed == {
+        name.removeprefix("sources/") for name in names if name.startswith("sources/") and name.endswith(".c")
+    }
 
 
 def test_the_description_names_each_input_and_output_with_its_unit(tire_3d):
@@ -69,7 +76,14 @@ def test_the_sources_inside_build_on_their_own(tire_2d, tmp_path):
     sources = tmp_path / "unzipped" / "sources"
     assert compile_binary(sources, tmp_path / "built.so") is None
     symbols = subprocess.run(["nm", "-D", str(tmp_path / "built.so")], capture_output=True, text=True).stdout
-    for function in ("fmi2Instantiate", "fmi2DoStep", "fmi2GetReal", "fmi2SetReal", "fmi2FreeInstance"):
+    for function in (
+        "fmi2Instantiate",
+        "fmi2DoStep",
+        "fmi2GetReal",
+        "fmi2SetReal",
+        "fmi2FreeInstance",
+        "fmi2GetStatus",
+    ):
         assert function in symbols
 
 

@@ -48,48 +48,9 @@ static FILE *open_file(const char *path) {
 static FILE *open_file(const char *path) { return fopen(path, "rb"); }
 #endif
 
-#define VR_FORCE 0
-#define VR_FIXED_HUB_FORCE 1
-#define VR_HUB_FORCE 2
-#define VR_HUB_DISPLACEMENT 3
-#define VR_SPEED 4
-#define VR_STEP 5
-#define VR_LEADING_EDGE 6
-#define VR_ROAD 10
-#define VR_ROAD_Y 100000
-#define FORMAT_VERSION 2
-#define GUID_BYTES 64
-/* accepted departure of a communication step from the FMU's own, relative: a tool's round-off, not another step */
-#define STEP_TOLERANCE 1e-6
+#include "roadnoise_rm_tire.h"
 
-typedef struct {
-    /* the tire's numbers (tire.bin) */
-    int n_strips, n_tasselli, n_taps, n_sections, n_rows;
-    double dt, speed, leading_edge;
-    double *strip_y;     /* n_strips: lateral position of each road input (m) */
-    double *direct;      /* n_tasselli + 1: feedthrough of each tassello's displacement, then the hub's */
-    int *row_strip, *row_tassello;
-    double *taps;        /* n_rows x n_taps: weight of the strip's height m steps ago on the tassello */
-    int *source;         /* n_sections: the input driving each section (n_tasselli: the hub) */
-    double *e_re, *e_im, *b0_re, *b0_im, *b1_re, *b1_im, *factor;
-    /* the state at the last committed point */
-    double *x_re, *x_im, *v_prev;  /* per section: state and drive at t_{k-1} */
-    double *x_new_re, *x_new_im;   /* per section: state at t_k for the inputs now set */
-    double *delay;       /* n_strips x 2 n_taps: each strip's window of heights, newest first, at [pos, pos + n_taps) */
-    int pos, n_committed;
-    double *road;        /* n_strips: inputs now set */
-    double hub;
-    double *u;           /* n_tasselli + 1: tassello displacements and the hub's, at t_k */
-    double force, fixed_hub_force, hub_force;
-    int fresh;           /* outputs computed for the inputs now set */
-    double time;
-    int initialised;
-    char *instance_name;
-    const fmi2CallbackFunctions *callbacks;
-    int logging;
-} Tire;
-
-static void log_message(Tire *tire, fmi2Status status, const char *category, const char *format, ...) {
+void roadnoise_log_message(Tire *tire, fmi2Status status, const char *category, const char *format, ...) {
     char message[1024], escaped[2048];
     size_t i, n = 0;
     va_list args;
@@ -107,11 +68,6 @@ static void log_message(Tire *tire, fmi2Status status, const char *category, con
     tire->callbacks->logger(tire->callbacks->componentEnvironment, tire->instance_name, status, category, escaped);
 }
 
-#define FAIL(tire, ...)                                           \
-    do {                                                          \
-        log_message((tire), fmi2Error, "logStatusError", __VA_ARGS__); \
-        return fmi2Error;                                         \
-    } while (0)
 
 /* ---- reading tire.bin ---------------------------------------------------------------- */
 
@@ -391,18 +347,18 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     tire->instance_name = (char *)calloc(strlen(instanceName ? instanceName : "") + 1, 1);
     if (instanceName) strcpy(tire->instance_name, instanceName);
     if (fmuType != fmi2CoSimulation) {
-        log_message(tire, fmi2Error, "logStatusError", "this FMU is for co-simulation only");
+        roadnoise_log_message(tire, fmi2Error, "logStatusError", "this FMU is for co-simulation only");
         free_tire(tire);
         return NULL;
     }
     if (fmuResourceLocation == NULL) {
-        log_message(tire, fmi2Error, "logStatusError", "no resource location given");
+        roadnoise_log_message(tire, fmi2Error, "logStatusError", "no resource location given");
         free_tire(tire);
         return NULL;
     }
     problem = load_tire(tire, fmuResourceLocation, fmuGUID);
     if (problem != NULL) {
-        log_message(tire, fmi2Error, "logStatusError", "%s (resources at %s)", problem, fmuResourceLocation);
+        roadnoise_log_message(tire, fmi2Error, "logStatusError", "%s (resources at %s)", problem, fmuResourceLocation);
         free_tire(tire);
         return NULL;
     }
@@ -417,7 +373,7 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     tire->u = (double *)calloc(tire->n_tasselli + 1, sizeof(double));
     if (!tire->x_re || !tire->x_im || !tire->v_prev || !tire->x_new_re || !tire->x_new_im || !tire->delay ||
         !tire->road || !tire->u) {
-        log_message(tire, fmi2Error, "logStatusError", "out of memory");
+        roadnoise_log_message(tire, fmi2Error, "logStatusError", "out of memory");
         free_tire(tire);
         return NULL;
     }
@@ -532,102 +488,4 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint, fmi2R
 fmi2Status fmi2CancelStep(fmi2Component c) {
     (void)c;
     return fmi2Error; /* every step completes before fmi2DoStep returns */
-}
-
-/* ---- what a co-simulation slave without these features answers ------------------------- */
-
-#define NOT_SUPPORTED(tire, name) FAIL((Tire *)(tire), "%s is not supported by this FMU", name)
-
-fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Integer value[]) {
-    (void)vr; (void)value;
-    if (nvr == 0) return fmi2OK;
-    NOT_SUPPORTED(c, "fmi2GetInteger");
-}
-fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Boolean value[]) {
-    (void)vr; (void)value;
-    if (nvr == 0) return fmi2OK;
-    NOT_SUPPORTED(c, "fmi2GetBoolean");
-}
-fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2String value[]) {
-    (void)vr; (void)value;
-    if (nvr == 0) return fmi2OK;
-    NOT_SUPPORTED(c, "fmi2GetString");
-}
-fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Integer value[]) {
-    (void)vr; (void)value;
-    if (nvr == 0) return fmi2OK;
-    NOT_SUPPORTED(c, "fmi2SetInteger");
-}
-fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Boolean value[]) {
-    (void)vr; (void)value;
-    if (nvr == 0) return fmi2OK;
-    NOT_SUPPORTED(c, "fmi2SetBoolean");
-}
-fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2String value[]) {
-    (void)vr; (void)value;
-    if (nvr == 0) return fmi2OK;
-    NOT_SUPPORTED(c, "fmi2SetString");
-}
-fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *FMUstate) { (void)FMUstate; NOT_SUPPORTED(c, "fmi2GetFMUstate"); }
-fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate) { (void)FMUstate; NOT_SUPPORTED(c, "fmi2SetFMUstate"); }
-fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *FMUstate) { (void)FMUstate; NOT_SUPPORTED(c, "fmi2FreeFMUstate"); }
-fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate, size_t *size) {
-    (void)FMUstate; (void)size;
-    NOT_SUPPORTED(c, "fmi2SerializedFMUstateSize");
-}
-fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byte serializedState[], size_t size) {
-    (void)FMUstate; (void)serializedState; (void)size;
-    NOT_SUPPORTED(c, "fmi2SerializeFMUstate");
-}
-fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedState[], size_t size,
-                                   fmi2FMUstate *FMUstate) {
-    (void)serializedState; (void)size; (void)FMUstate;
-    NOT_SUPPORTED(c, "fmi2DeSerializeFMUstate");
-}
-fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference vUnknown_ref[], size_t nUnknown,
-                                        const fmi2ValueReference vKnown_ref[], size_t nKnown,
-                                        const fmi2Real dvKnown[], fmi2Real dvUnknown[]) {
-    (void)vUnknown_ref; (void)nUnknown; (void)vKnown_ref; (void)nKnown; (void)dvKnown; (void)dvUnknown;
-    NOT_SUPPORTED(c, "fmi2GetDirectionalDerivative");
-}
-fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
-                                       const fmi2Integer order[], const fmi2Real value[]) {
-    (void)vr; (void)nvr; (void)order; (void)value;
-    NOT_SUPPORTED(c, "fmi2SetRealInputDerivatives");
-}
-fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
-                                        const fmi2Integer order[], fmi2Real value[]) {
-    (void)vr; (void)nvr; (void)order; (void)value;
-    NOT_SUPPORTED(c, "fmi2GetRealOutputDerivatives");
-}
-/* a status this FMU does not keep: fmi2Discard, as FMI 2.0 asks (section 4.2.3); every step completes in
-   fmi2DoStep, so fmi2LastSuccessfulTime is the only status it answers */
-#define NO_STATUS(tire, name)                                                                         \
-    do {                                                                                              \
-        log_message((Tire *)(tire), fmi2Discard, "logStatusDiscard", "%s: this FMU keeps no such status", name); \
-        return fmi2Discard;                                                                           \
-    } while (0)
-
-fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status *value) {
-    (void)s; (void)value;
-    NO_STATUS(c, "fmi2GetStatus");
-}
-fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real *value) {
-    if (s == fmi2LastSuccessfulTime) {
-        *value = ((Tire *)c)->time;
-        return fmi2OK;
-    }
-    NO_STATUS(c, "fmi2GetRealStatus");
-}
-fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s, fmi2Integer *value) {
-    (void)s; (void)value;
-    NO_STATUS(c, "fmi2GetIntegerStatus");
-}
-fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean *value) {
-    (void)s; (void)value;
-    NO_STATUS(c, "fmi2GetBooleanStatus");
-}
-fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind s, fmi2String *value) {
-    (void)s; (void)value;
-    NO_STATUS(c, "fmi2GetStringStatus");
 }
