@@ -137,6 +137,25 @@ class ReducedHarmonic:
             return [_condense(self.projected, np.eye(k))]
         return [_condense(self.projected, basis) for _, basis in parity_bases(self.mirror)]
 
+    def eigenvalues(self, laws: dict | None = None, omega: float = 0.0) -> np.ndarray:
+        """Eigenvalues (rad^2/s^2, ascending) of the undamped pencil ``(K', M)`` in the basis: ``K'`` with each
+        compound's storage modulus at ``omega`` (rad/s) under ``laws``, or its static modulus without ``laws``."""
+        projected = self.projected
+        scale = {name: 1.0 if laws is None else float(np.real(laws[name].ratio(omega))) for name in projected.compounds}
+        stiffness = projected.gas + sum(scale[name] * m for name, m in projected.compounds.items())
+        return sla.eigh(stiffness, projected.mass, eigvals_only=True)
+
+    @cached_property
+    def static_eigenvalues(self) -> np.ndarray:
+        """:meth:`eigenvalues` with the static moduli (cached)."""
+        return self.eigenvalues()
+
+    @property
+    def lowest_frequency(self) -> float:
+        """The lowest natural frequency (Hz) in the basis with the static moduli, undamped (0 with a direction of
+        negative static stiffness)."""
+        return float(np.sqrt(max(self.static_eigenvalues[0], 0.0)) / (2 * np.pi))
+
     def receptance(
         self, laws: dict, omegas: np.ndarray, inertia: bool = True, rows: np.ndarray | None = None
     ) -> np.ndarray:

@@ -14,6 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from scipy import sparse
 
 from .contact import angular_sums
 from .dynamics import direct_receptance, lateral_mirror
@@ -41,23 +42,21 @@ def blocks_by_sum(receptance: np.ndarray, c: int, columns: np.ndarray) -> np.nda
     return out
 
 
-def angular_table(blocks: np.ndarray, cos: np.ndarray, sin: np.ndarray) -> np.ndarray:
-    """Harmonic sums of one frequency's receptance blocks (n_n, 4, n, c) (:func:`blocks_by_sum`) as a gather table.
+def angular_tables(blocks: np.ndarray, cos: np.ndarray, sin: np.ndarray) -> np.ndarray:
+    """Harmonic sums of a block of frequencies' receptance blocks (b, n_n, 4, n, c) (:func:`blocks_by_sum`)
+    as gather tables.
 
-    Returns (n_off n c, 8) real: for each (offset, row column, column) the real and imaginary
-    parts of ``rr, tt, rt, tr`` (:func:`gather_table`). The weights are real, so each sum is
-    one real product over the real and imaginary parts together (half the work of a complex one).
+    Returns (n_off n c 4, b) complex, frequencies last: for each (offset, row column, column) the sums
+    of ``rr, tt, rt, tr`` (:meth:`Projection.even` reads them so, in one sparse product for the block).
+    The weights are real, so each sum is one real product over the real and imaginary parts together
+    (half the work of a complex one), for every frequency of the block at once.
     """
-    n_n, _, n, c = blocks.shape
-    values = blocks.view(float).reshape(n_n, 2, -1)  # (n_n, [rr tt | rt tr], 2 n c complex as floats)
-    even = (cos @ values[:, 0]).reshape(-1, 2, n, c, 2)
-    odd = (sin @ values[:, 1]).reshape(-1, 2, n, c, 2)
-    return gather_table(np.concatenate([even, odd], axis=1))
-
-
-def gather_table(sums: np.ndarray) -> np.ndarray:
-    """Sums (n_off, 4, n, c, 2) (blocks ``rr, tt, rt, tr``; real and imaginary parts) as (n_off n c, 8)."""
-    return np.ascontiguousarray(np.moveaxis(sums, 1, 3)).reshape(-1, 8)
+    b, n_n, _, n, c = blocks.shape
+    values = blocks.view(float).reshape(b, n_n, 2, -1)  # (b, n_n, [rr tt | rt tr], 2 n c complex as floats)
+    even = np.matmul(cos, values[:, :, 0]).reshape(b, -1, 2, n, c, 2)
+    odd = np.matmul(sin, values[:, :, 1]).reshape(b, -1, 2, n, c, 2)
+    sums = np.concatenate([even, odd], axis=2)  # (b, n_off, 4, n, c, re/im)
+    return np.ascontiguousarray(sums.transpose(1, 3, 4, 2, 0, 5)).view(complex).reshape(-1, b)
 
 
 def column_image(tire: SectionTire) -> np.ndarray | None:
@@ -157,7 +156,7 @@ class Projection:
 
     ``u_z = -cos(a) u_r + sin(a) u_t`` and a vertical force ``F`` loads ``f_r = -cos(b) F``,
     ``f_t = sin(b) F``. The trigonometric weights and the positions of each point pair in the
-    sums' gather table (offset, row column, column; :func:`gather_table`) do not depend on
+    sums' gather table (offset, row column, column; :func:`angular_tables`) do not depend on
     frequency: built once. ``first`` (n_cols,) is the position of each grid column among the
     table's row columns (default: the table has every column's row).
     """
@@ -181,17 +180,35 @@ class Projection:
 
     @staticmethod
     def block(table: np.ndarray, pick: np.ndarray, weights: np.ndarray) -> np.ndarray:
-        """The vertical receptance of the point pairs at positions ``pick`` of ``table`` (n, 8), ``weights`` (.., 4)."""
-        gathered = np.take(table, pick, axis=0).reshape(pick.shape + (4, 2))
-        real = np.einsum("abk,abk->ab", gathered[..., 0], weights)
-        imag = np.einsum("abk,abk->ab", gathered[..., 1], weights)
-        return real + 1j * imag
+        """The vertical receptance of the point pairs at positions ``pick`` of one frequency's ``table``
+        (n, 4) complex (:func:`angular_tables`), ``weights`` (.., 4)."""
+        return np.einsum("abk,abk->ab", np.take(table, pick, axis=0), weights)
 
-    def even(self, table: np.ndarray, paired: np.ndarray) -> np.ndarray:
-        """Receptance of an even (fore-aft symmetric) field on the points with theta >= 0."""
-        comp = self.block(table, self.direct, self.weights[0])
-        comp[:, paired] += self.block(table, self.mirrored, self.weights[1])
-        return comp
+    def even(self, tables: np.ndarray, paired: np.ndarray) -> np.ndarray:
+        """Receptance of an even (fore-aft symmetric) field on the points with theta >= 0, (b, rows, R), from
+        a block of frequencies' gather tables (n 4, b) (:func:`angular_tables`).
+
+        The gather and the weighted sums are one linear map from a table's entries to ``comp``, built
+        once per ``paired``: one sparse product for every frequency of the block.
+        """
+        operator = self._even_operator(paired, tables.shape[0])
+        return (operator @ tables).T.reshape((tables.shape[1],) + self.direct.shape)
+
+    def _even_operator(self, paired: np.ndarray, n_entries: int) -> sparse.csr_matrix:
+        key = (np.asarray(paired, bool).tobytes(), n_entries)
+        cached = getattr(self, "_operators", {})
+        if key not in cached:
+            rows, cols = self.direct.shape
+            out = np.arange(rows * cols).reshape(rows, cols)
+            targets = [out, out[:, np.asarray(paired, bool)]]
+            positions = [self.direct, self.mirrored]
+            entry_rows = np.concatenate([np.repeat(t.ravel(), 4) for t in targets])
+            entry_cols = np.concatenate([(4 * p[..., None] + np.arange(4)).ravel() for p in positions])
+            values = np.concatenate([w.ravel() for w in self.weights]).astype(complex)
+            shape = (rows * cols, n_entries)
+            cached[key] = sparse.csr_matrix((values, (entry_rows, entry_cols)), shape=shape)
+            self._operators = cached
+        return cached[key]
 
 
 def contact_receptance(tire: SectionTire, static: SectionStaticState, frequency: float) -> np.ndarray:
@@ -212,5 +229,5 @@ def contact_receptance(tire: SectionTire, static: SectionStaticState, frequency:
     projection = Projection((col, th), (col, th), (col, th), offset_index, offset_index, grid.n_cols)
     c = grid.n_cols
     blocks = np.stack([sums[:, :c, :c], sums[:, c:, c:], sums[:, :c, c:], sums[:, c:, :c]], axis=1)
-    table = gather_table(blocks.view(float).reshape(blocks.shape + (2,)))
+    table = np.moveaxis(blocks, 1, 3).reshape(-1, 4)  # (offset, row column, column) x (rr, tt, rt, tr)
     return projection.block(table, projection.direct, projection.weights[0])
