@@ -142,13 +142,27 @@ class ReducedHarmonic:
         compound's storage modulus at ``omega`` (rad/s) under ``laws``, or its static modulus without ``laws``."""
         projected = self.projected
         scale = {name: 1.0 if laws is None else float(np.real(laws[name].ratio(omega))) for name in projected.compounds}
+        if all(value == 1.0 for value in scale.values()):
+            return self.static_eigenvalues
         stiffness = projected.gas + sum(scale[name] * m for name, m in projected.compounds.items())
         return sla.eigh(stiffness, projected.mass, eigvals_only=True)
 
     @cached_property
     def static_eigenvalues(self) -> np.ndarray:
         """:meth:`eigenvalues` with the static moduli (cached)."""
-        return self.eigenvalues()
+        projected = self.projected
+        stiffness = projected.gas + sum(projected.compounds.values())
+        return sla.eigh(stiffness, projected.mass, eigvals_only=True)
+
+    @cached_property
+    def compound_floors(self) -> dict[str, float]:
+        """Each compound's lowest eigenvalue against the mass (rad^2/s^2 per unit modulus ratio), or 0 when its
+        matrix is positive semi-definite: a compound that carries the pneumatic stiffness may be indefinite."""
+        projected = self.projected
+        return {
+            name: min(0.0, float(sla.eigh(m, projected.mass, eigvals_only=True, subset_by_index=[0, 0])[0]))
+            for name, m in projected.compounds.items()
+        }
 
     @property
     def lowest_frequency(self) -> float:

@@ -295,6 +295,8 @@ class EvenFootprint:
         rows = contact_rows(c, columns)
         evaluated = np.ones(len(self.harmonics), bool) if smooth is None else ~smooth.smooth
         picked = np.flatnonzero(evaluated)
+        if picked.size == 0:  # every harmonic interpolated (no inertia: no resonance)
+            return smooth.tables_at(part)
         blocks = np.empty((block.size, picked.size, 4, columns.size, c), complex)
         for j, k in enumerate(picked):
             blocks[:, j] = blocks_by_sum(self.harmonics[k].receptance(laws, block, inertia, rows), c, columns)
@@ -335,14 +337,14 @@ class EvenFootprint:
                     pending.append(workers.submit(run, parts[index + count]))
                 yield part, result
 
-    def receptances(self, omegas: np.ndarray, laws: dict | None = None, inertia: bool = True):
+    def receptances(self, omegas: np.ndarray, laws: dict | None = None, inertia: bool = True, interpolate: bool = True):
         """``comp`` at angular frequencies ``omegas`` (rad/s), in blocks: yields ``(slice, (b, R, R))``.
 
-        ``laws`` default the tire's own (frequency-dependent) compound laws.
+        ``laws`` default the tire's own (frequency-dependent) compound laws; ``interpolate``: see :meth:`_blocks`.
         """
         paired = self.partner >= 0
         every_column = np.arange(self.tire.grid.n_cols)
-        for part, tables in self._blocks(omegas, laws, inertia, every_column):
+        for part, tables in self._blocks(omegas, laws, inertia, every_column, interpolate=interpolate):
             # an even displacement field: h(j, -a) = h(j, a); the mirrored column adds to its partner
             yield part, self.projection.even(tables, paired)
 
@@ -446,10 +448,10 @@ def footprint_frf(
         The loaded air cavity (:func:`roadnoise_utils.tire.cross_section.cavity_frf.section_cavity_coupling` of this
         static state), coupled into the FRFs (beyond the paper); None: the paper's model.
     interpolate : bool
-        On a dense grid (more than twice the nodes of
-        :func:`~roadnoise_utils.tire.cross_section.frequency_nodes.frequency_nodes`), the harmonics whose
-        lowest mode is above 1.25 ``max(freqs)`` are evaluated on nodes 10 Hz apart above 40 Hz and
-        interpolated (:mod:`~roadnoise_utils.tire.cross_section.frequency_nodes`: within 1e-5 of the
+        On a dense grid (at least twice the nodes of
+        :func:`~roadnoise_utils.tire.cross_section.frequency_nodes.frequency_nodes`), the harmonics with
+        no mode within max(0.25 ``max(freqs)``, 100 Hz) of the band are evaluated on nodes 10 Hz apart
+        above 40 Hz and interpolated (:mod:`~roadnoise_utils.tire.cross_section.frequency_nodes`: within 1e-5 of the
         direct evaluation on the 165/65 R14, 0-400 Hz every 1 Hz); ``False`` evaluates every harmonic at
         every frequency.
     """

@@ -381,4 +381,4 @@ def frozen_check(
     anchor = even.footprint(np.zeros(1), laws=laws, inertia=False)
     source = np.full(modes.eigenvalues.size, "frozen model", dtype=object)
     model = _model_of(modes, even, anchor, modes.eigenvalues, source, reference_frequency, frozen)
-    return FrozenCheck(model.frf(freqs), even.footprint(freqs, laws=laws), modes.eigenvalues)
+    return FrozenCheck(model.frf(freqs), even.footprint(freqs, laws=laws, interpolate=False), modes.eigenvalues)

@@ -91,6 +91,8 @@ def footprint_reductions(
     with threadpool_limits(1):
         dynamic = _dynamic_reductions(tire, f_max, cutoff, wall)
         n_high, basis, high = _high_harmonics(tire, len(dynamic) - 1, f_max)
+        # what the frequency nodes' criterion reads of each harmonic, kept with the reductions
+        list(thread_map(lambda h: (h.static_eigenvalues, h.compound_floors), dynamic + high))
     return FootprintReductions(float(f_max), float(cutoff), dynamic, n_high, basis, high)
 
 
