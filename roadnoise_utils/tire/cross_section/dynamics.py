@@ -164,12 +164,6 @@ class ReducedHarmonic:
             for name, m in projected.compounds.items()
         }
 
-    @property
-    def lowest_frequency(self) -> float:
-        """The lowest natural frequency (Hz) in the basis with the static moduli, undamped (0 with a direction of
-        negative static stiffness)."""
-        return float(np.sqrt(max(self.static_eigenvalues[0], 0.0)) / (2 * np.pi))
-
     def receptance(
         self, laws: dict, omegas: np.ndarray, inertia: bool = True, rows: np.ndarray | None = None
     ) -> np.ndarray:
