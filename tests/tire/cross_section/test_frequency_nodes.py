@@ -81,13 +81,13 @@ def test_the_harmonics_called_smooth_interpolate_and_the_others_would_not(coarse
     plan = smooth_harmonics(even, FREQS, laws, True, even.lateral.columns)
     assert 0 < plan.smooth.sum() < plan.smooth.size  # both kinds present
     nodes = frequency_nodes(FREQS)
-    first, weights = lagrange_stencil(nodes, FREQS)
+    index, weights = node_stencil(nodes, FREQS)  # the stencils the footprint uses
     rows = np.arange(4)
     error = []
     for harmonic in even.harmonics:
         exact = harmonic.receptance(laws, 2 * np.pi * FREQS, True, rows).reshape(FREQS.size, -1)
         at_nodes = harmonic.receptance(laws, 2 * np.pi * nodes, True, rows).reshape(nodes.size, -1)
-        interpolated = np.einsum("fa,fak->fk", weights, at_nodes[first[:, None] + np.arange(4)])
+        interpolated = np.einsum("fa,fak->fk", weights, at_nodes[index])
         error.append(np.abs(interpolated - exact).max() / np.abs(exact).max())
     error = np.array(error)
     assert error[plan.smooth].max() < 1e-4
