@@ -50,3 +50,36 @@ def test_prony_states_updated_in_place_as_by_the_formula():
     assert np.abs(history - branches.history(fused, old)).max() < 1e-13
     with pytest.raises(ValueError, match="C-contiguous"):
         branches.update_in_place(np.asfortranarray(states), old, new)
+
+
+def test_shared_prony_states_give_each_compounds_separate_states_bit_for_bit():
+    """Compounds fitted on one grid of relaxation times share their states: three steps of the shared
+    update give every compound's history and extra force exactly (==) as its own states would; the
+    union keeps each time once; branches of another time step are refused."""
+    from roadnoise_utils.tire.rubber import PronyBranches, SharedPronyStates, prony_series
+
+    laws = {
+        "soft": ru.tire.FractionalZener(3.0, 1.0e-3, 0.3),
+        "stiff": ru.tire.FractionalZener(1.5, 1.0e-4, 0.5),
+        "slow": ru.tire.FractionalZener(2.0, 1.0e-1, 0.2),
+    }
+    dt, size = 1.0e-4, 40000  # more than one chunk
+    branches = {c: PronyBranches(prony_series(law), dt) for c, law in laws.items()}
+    assert len({b.times.size for b in branches.values()}) > 1  # different zero weights: the rows differ
+    rng = np.random.default_rng(2)
+    u = [rng.normal(size=size) for _ in range(4)]
+    shared = SharedPronyStates(branches, size)
+    assert shared.times.size == np.unique(np.concatenate([b.times for b in branches.values()])).size
+    histories = shared.start(u[0])
+    own = {c: np.tile(u[0], (b.weights.size, 1)) for c, b in branches.items()}
+    own_history = {c: b.history(own[c], u[0]) for c, b in branches.items()}
+    for old, new in zip(u[:-1], u[1:]):
+        shared.update_in_place(old, new, histories)
+        for c, b in branches.items():
+            b.update_in_place(own[c], old, new, own_history[c])
+            assert np.array_equal(histories[c], own_history[c])
+            assert np.array_equal(shared.states[shared.rows[c]], own[c])
+            assert np.array_equal(shared.extra(c, new), b.extra(own[c], new))
+    other = {"soft": branches["soft"], "late": PronyBranches(prony_series(laws["stiff"]), 2 * dt)}
+    with pytest.raises(ValueError, match="another time step"):
+        SharedPronyStates(other, 10)

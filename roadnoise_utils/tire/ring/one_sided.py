@@ -10,7 +10,7 @@ from ... import guards
 from ...road.cleat import point_heights
 from ..active_set import held_contact
 from ..contact import ContactRun, time_steps
-from ..rubber import PronyBranches, prony_series
+from ..rubber import PronyBranches, SharedPronyStates, prony_series
 from .banded import BandedCholesky
 from .mechanics import UZ, FETModel
 from .static import StaticState, check_same_tire, contact_problem
@@ -200,17 +200,18 @@ class _DynamicModel:
         if self.in_contact.sum() != static.contact.sum():
             raise RuntimeError("the candidate tread points do not cover the static footprint")
 
-    def _hub_force(self, u: np.ndarray, states: dict[str, np.ndarray]) -> float:
+    def _hub_force(self, u: np.ndarray, states: SharedPronyStates) -> float:
         force = self.hub_elastic @ u
         for name, row in self.hub_parts.items():
-            force += row @ (u + self.branches[name].extra(states[name], u))
+            force += row @ (u + states.extra(name, u))
         return -float(force)
 
     def run(self, travel: np.ndarray, heights: np.ndarray, speed: float, frozen: bool) -> ContactRun:
         dt, n = self.dt, travel.size
         u = self.u_static.copy()
         vel, acc = np.zeros_like(u), np.zeros_like(u)
-        states = {name: np.tile(u, (self.branches[name].weights.size, 1)) for name in self.K_parts}
+        states = SharedPronyStates({name: self.branches[name] for name in self.K_parts}, u.size)
+        history = states.start(u)  # one state per relaxation time, shared by the compounds
         tread = self.branches["tread"]
         compression = np.where(self.in_contact, self.road - self.surface - u[self.dofs], 0.0)
         tread_states = np.tile(compression, (tread.weights.size, 1))
@@ -231,7 +232,7 @@ class _DynamicModel:
         for step in range(1, n):
             rhs = self.M @ ((4.0 / dt**2) * u + (4.0 / dt) * vel + acc)
             for name, k in self.K_parts.items():
-                rhs += k @ self.branches[name].history(states[name], u)
+                rhs += k @ history[name]
             u_free = self.lu.solve(rhs)
             free_surface = tread.history(tread_states, compression) / tread.factor
             pen = self.road + heights[:, step] - self.surface - u_free[self.dofs] - free_surface
@@ -241,8 +242,7 @@ class _DynamicModel:
             new_compression = np.where(active, pen + free_surface - self.G[:, active] @ f[active], free_surface)
             acc_new = (4.0 / dt**2) * (u_new - u) - (4.0 / dt) * vel - acc
             vel = vel + 0.5 * dt * (acc + acc_new)
-            for name in self.K_parts:
-                states[name] = self.branches[name].update(states[name], u, u_new)
+            states.update_in_place(u, u_new, history)  # and the next step's history
             tread_states = tread.update(tread_states, compression, new_compression)
             u, acc, compression = u_new, acc_new, new_compression
             force[step] = self._hub_force(u, states) - static_force
