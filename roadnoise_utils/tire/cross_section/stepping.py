@@ -12,7 +12,8 @@ that have one), so a harmonic's state is ~120 numbers instead of ~1000.
   (:func:`.rubber.prony_series`, < 0.2 % from its fractional law over 0.1-2000 Hz): the same
   model as the frequency-domain FETvisco, one auxiliary state per Maxwell branch, updated
   exactly for a displacement linear over the step (as the ring model's
-  :mod:`roadnoise_utils.tire.contact`).
+  :mod:`roadnoise_utils.tire.contact`). The compounds' series share one grid of relaxation
+  times, and so their states (:class:`.rubber.SharedPronyStates`: 12 state vectors, not 47).
 * **Newmark.** Average acceleration (unconditionally stable, no numerical damping): per step
   and harmonic :math:`A q_{k+1} = M(\\tfrac4{dt^2} q + \\tfrac4{dt}\\dot q + \\ddot q) +
   \\sum_c K_c h_c + C^T g` with :math:`A = \\tfrac4{dt^2}M + K_{gas} + \\sum_c \\phi_c K_c`,
