@@ -6,7 +6,7 @@
 #       extension: .py
 #       format_name: percent
 #       format_version: '1.3'
-#       jupytext_version: 1.19.6
+#       jupytext_version: 1.19.7
 #   kernelspec:
 #     display_name: Python 3 (ipykernel)
 #     language: python
@@ -231,10 +231,12 @@ if ru.experiments.applicable(tire, "hub_transfer"):
 # local optimum, and which start reaches the better one differs from tassello to tassello. Ours
 # starts from lightly damped pairs spread evenly over the band; from a second set as well, spread
 # evenly on a log scale as pyvectorfit starts (`starting_poles=("linear", "log")`), each tassello
-# keeps the better fit. The pipeline keeps the first alone: the fits from the log start follow
-# round-off in the data (a change of 1e-15 moved some by 1e-3 of the response), so two processes
-# would give different sixth digits. Poles the band cannot pin down are held to what it
-# supports: above the band, at least 0.5 % damping; none slower than the grid resolves.
+# keeps the better fit. The pipeline keeps the first alone: where relocation from the log start
+# does not settle within its 8 iterations, its iterates amplify round-off in the data (a change
+# of 1e-15 moves some fits by up to 1e-6 of the response, against 4e-13 from the linear start),
+# enough for two processes to print different sixth digits. Poles the band cannot pin down are
+# held to what it supports: above the band, at least 0.5 % damping; none slower than the grid
+# resolves.
 
 # %%
 # NBVAL_IGNORE_OUTPUT

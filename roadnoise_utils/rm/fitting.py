@@ -337,10 +337,11 @@ def vector_fit(
         the start: lightly damped pairs evenly spread over the band suit evenly spread modes, a
         log spacing suits low-frequency features. ``("linear", "log")`` brings the paper tires'
         tasselli within 1.2x of the better of scikit-rf's and pyvectorfit's errors at 8 and 10-20
-        poles (the linear start alone: up to 1.5-6.7x), at twice the time; but the fits from the
-        log start follow round-off: a 1e-15 change of the data moved them by up to 1e-3 of the
-        response (cross-section tire, 17 poles), against 5e-10 from the linear start, so results
-        computed in two processes differ in their sixth digit. The pipeline keeps the default.
+        poles (the linear start alone: up to 1.5-6.7x), at twice the time; but where relocation
+        from the log start does not settle within ``iterations`` its iterates amplify round-off: a
+        1e-15 change of the data moved the fits by up to 1.3e-6 of the response (cross-section tire,
+        16 poles), against 4e-13 from the linear start, enough to change a sixth printed digit.
+        The pipeline keeps the default.
     proportional : bool
         Add a term :math:`e s` to the model (improper: a response that keeps rising at the top
         of the band, e.g. an admittance). The tire's footprint FRFs have none (paper Eq. 1 is

@@ -120,13 +120,22 @@ def relocate(
     ``h``, ``w``: (G, n_s); ``real`` (G, n_r), ``upper`` (G, n_c); ``proportional``: the model
     has a term ``e s`` besides the constant. Returns the zeros of each fitted sigma(s),
     stabilised: (G, n) complex.
+
+    The least squares are solved by a QR factorisation of the column-scaled real system, the
+    right-hand side appended as its last column (its triangular factor then carries
+    :math:`Q^T b`). Normal equations would square the system's condition number, which reaches
+    1e6-1e9 when poles crowd (18-24 poles, or pairs started on a log scale at the lowest
+    frequencies): their solutions then follow round-off. A 1e-15 change of the data moves the
+    fits from the log start by up to 1.3e-3 of the response with normal equations, 1.3e-6 with
+    this QR; from the linear start, 3e-8 against 4e-13.
     """
     g, n_s = h.shape
     n_r, n_c = real.shape[-1], upper.shape[-1]
     n = n_r + 2 * n_c
     m = n + (2 if proportional else 1)  # the model's unknowns: partial fractions, constant (and e)
-    # the design matrix [phi w, w, (s w), -phi h w, -h w], written in place (this step is memory-bound)
-    z = np.empty((g, n_s, m + n + 1), complex)
+    k = m + n + 1
+    # the design matrix [phi w, w, (s w), -phi h w, -h w] (this step is memory-bound)
+    z = np.empty((g, n_s, k), complex)
     sr = s[None, :, None]
     z[..., :n_r] = 1.0 / (sr - real[:, None, :])
     if n_c:
@@ -140,18 +149,19 @@ def relocate(
     column_sum = z[..., : n + 1].sum(axis=1)
     z[..., m:] = z[..., : n + 1] * (-(h * w))[..., None]
     z[..., :m] *= w[..., None]
-    # relaxation: Re(sum_k sigma(s_k)) = N, scaled like the data rows
+    # the stacked real system [Re z; Im z; relax | b] with b = [0; 0; scale N]; relaxation:
+    # Re(sum_k sigma(s_k)) = N, scaled like the data rows
     scale = np.linalg.norm(h * w, axis=-1) / n_s
-    relax = np.zeros((g, z.shape[-1]))
-    relax[:, m:] = scale[:, None] * np.real(column_sum)
-    # normal equations of the stacked real system [Re z; Im z; relax] x = [0; 0; scale N]:
-    # Re(z^H z) + relax relax^T (ten times faster than QR/SVD on these tall, narrow systems and
-    # accurate enough for the iterative relocation; the final residues use an SVD solve)
-    normal = np.real(np.swapaxes(z.conj(), 1, 2) @ z) + relax[:, :, None] * relax[:, None, :]
-    rhs = relax * (scale * n_s)[:, None]
-    col = np.sqrt(np.diagonal(normal, axis1=1, axis2=2)).copy()
+    system = np.zeros((g, 2 * n_s + 1, k + 1))
+    system[:, :n_s, :k] = z.real
+    system[:, n_s : 2 * n_s, :k] = z.imag
+    system[:, -1, m:k] = scale[:, None] * np.real(column_sum)
+    system[:, -1, k] = scale * n_s
+    col = np.linalg.norm(system[..., :k], axis=1)
     col[col == 0] = 1.0
-    x = solve_normal(normal / (col[:, :, None] * col[:, None, :]), rhs / col) / col
+    system[..., :k] /= col[:, None, :]
+    r = np.linalg.qr(system, mode="r")
+    x = solve_square(r[:, :k, :k], r[:, :k, k]) / col  # the triangular system R x = Q^T b
     return sigma_zeros(real, upper, x[:, m : m + n], x[:, m + n])
 
 
@@ -170,12 +180,12 @@ def sigma_zeros(real: np.ndarray, upper: np.ndarray, c_sigma: np.ndarray, d_sigm
     return np.where(tiny, -1e-6 * np.abs(zeros) + 1j * zeros.imag, zeros)
 
 
-def solve_normal(matrix: np.ndarray, rhs: np.ndarray) -> np.ndarray:
-    """Solutions of a batch of normal equations (G, m, m) x = (G, m); a singular one by least squares.
+def solve_square(matrix: np.ndarray, rhs: np.ndarray) -> np.ndarray:
+    """Solutions of a batch of square systems (G, m, m) x = (G, m); a singular one by least squares.
 
-    A starting pole set with coinciding columns makes a relocation's normal matrix exactly
-    singular in some BLAS builds (seen with OpenBLAS's Haswell kernels on one thread): its
-    minimum-norm least-squares solution relocates the poles as well.
+    A starting pole set with coinciding columns makes a relocation's triangular factor (or a
+    selection's normal matrix) exactly singular: its minimum-norm least-squares solution
+    relocates the poles as well.
     """
     try:
         return np.linalg.solve(matrix, rhs[..., None])[..., 0]
@@ -281,7 +291,7 @@ def errors_for_poles(
     # normal equations, the residual then formed explicitly: an error dx in the coefficients adds
     # only |A dx|^2 to the squared residual (the least-squares minimum is stationary), far below
     # the fits' errors
-    coef = solve_normal(np.swapaxes(system, 1, 2) @ system, np.einsum("gij,gi->gj", system, rhs))
+    coef = solve_square(np.swapaxes(system, 1, 2) @ system, np.einsum("gij,gi->gj", system, rhs))
     residual = np.einsum("gij,gj->gi", system, coef) - rhs
     return np.linalg.norm(residual, axis=-1) / np.linalg.norm(h * w, axis=-1)
 

@@ -151,15 +151,20 @@ def test_a_fit_with_a_proportional_term_has_no_state_space():
         ru.realize(fit)
 
 
-def test_the_default_fits_follow_the_data_continuously(tire):
-    """A change of the data at round-off (1e-15) moves the default fits by round-off, not to another
-    local optimum: results computed in two processes (whose FRFs differ in the last bits) agree."""
+@pytest.mark.parametrize("starts", [("linear",), STARTS], ids=["default start", "both starts"])
+def test_the_fits_follow_the_data_continuously(tire, starts):
+    """A change of the data at round-off (1e-15) moves the fits by round-off, not to another local
+    optimum: results computed in two processes (whose FRFs differ in the last bits) agree. With
+    the relocations' least squares solved by normal equations instead of QR these fits move by
+    3.5e-9 (default start) and 1.2e-8 (both starts) of their response, above the bound; by QR,
+    1e-13 and 3e-13."""
     visco = ru.stages.frf_visco(tire)
-    fits = ru.stages.fit_tasselli(tire)
+    n_poles = ru.stages.fit_tasselli(tire).n_poles
     band = visco.freqs <= BAND
     rng = np.random.default_rng(0)
     nudged = visco.H * (1 + 1e-15 * rng.standard_normal(visco.H.shape))
-    again = ru.fit_tasselli(visco.freqs, nudged, n_poles=fits.n_poles, f_max=BAND)
+    fits = ru.fit_tasselli(visco.freqs, visco.H, n_poles=n_poles, f_max=BAND, starting_poles=starts)
+    again = ru.fit_tasselli(visco.freqs, nudged, n_poles=n_poles, f_max=BAND, starting_poles=starts)
     for a, b in zip(fits, again):
         response = a(visco.freqs[band])
-        assert np.max(np.abs(b(visco.freqs[band]) - response)) < 1e-7 * np.max(np.abs(response))
+        assert np.max(np.abs(b(visco.freqs[band]) - response)) < 1e-10 * np.max(np.abs(response))
