@@ -125,9 +125,10 @@ def relocate(
     right-hand side appended as its last column (its triangular factor then carries
     :math:`Q^T b`). Normal equations would square the system's condition number, which reaches
     1e6-1e9 when poles crowd (18-24 poles, or pairs started on a log scale at the lowest
-    frequencies): their solutions then follow round-off. A 1e-15 change of the data moves the
-    fits from the log start by up to 1.3e-3 of the response with normal equations, 1.3e-6 with
-    this QR; from the linear start, 3e-8 against 4e-13.
+    frequencies): their solutions then follow round-off. On the 165/65 R14 tires (ring and
+    cross-section, flat road and drum, 8-24 poles over 0-250 Hz and 19-30 over 0-400 Hz) a 1e-15
+    change of the data moved the fits from the linear start by up to 2e-3 of the response with
+    normal equations (20 poles), and by at most 6e-9 with this QR.
     """
     g, n_s = h.shape
     n_r, n_c = real.shape[-1], upper.shape[-1]

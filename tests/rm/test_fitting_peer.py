@@ -151,15 +151,20 @@ def test_a_fit_with_a_proportional_term_has_no_state_space():
         ru.realize(fit)
 
 
-@pytest.mark.parametrize("starts", [("linear",), STARTS], ids=["default start", "both starts"])
-def test_the_fits_follow_the_data_continuously(tire, starts):
+@pytest.mark.parametrize(
+    "starts, n_poles",
+    [(("linear",), None), (("linear",), 20), (STARTS, None)],
+    ids=["default start", "default start, 20 poles", "both starts"],
+)
+def test_the_fits_follow_the_data_continuously(tire, starts, n_poles):
     """A change of the data at round-off (1e-15) moves the fits by round-off, not to another local
     optimum: results computed in two processes (whose FRFs differ in the last bits) agree. With
-    the relocations' least squares solved by normal equations instead of QR these fits move by
-    3.5e-9 (default start) and 1.2e-8 (both starts) of their response, above the bound; by QR,
-    1e-13 and 3e-13."""
+    the relocations' least squares solved by normal equations instead of QR these fits moved by
+    3e-10 to 1e-8 of their response (above the bound; on the same FRFs computed in another
+    process, up to 2e-3 at 20 poles); by QR, 1e-13 to 3e-12. ``n_poles=None``: the pipeline's
+    order (13)."""
     visco = ru.stages.frf_visco(tire)
-    n_poles = ru.stages.fit_tasselli(tire).n_poles
+    n_poles = n_poles or ru.stages.fit_tasselli(tire).n_poles
     band = visco.freqs <= BAND
     rng = np.random.default_rng(0)
     nudged = visco.H * (1 + 1e-15 * rng.standard_normal(visco.H.shape))
