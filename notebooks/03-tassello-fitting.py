@@ -231,10 +231,10 @@ if ru.experiments.applicable(tire, "hub_transfer"):
 # local optimum, and which start reaches the better one differs from tassello to tassello. Ours
 # starts from lightly damped pairs spread evenly over the band; from a second set as well, spread
 # evenly on a log scale as pyvectorfit starts (`starting_poles=("linear", "log")`), each tassello
-# keeps the better fit. The pipeline keeps the first alone: where relocation from the log start
-# does not settle within its 8 iterations, its iterates amplify round-off in the data (a change
-# of 1e-15 moves some fits by 1e-6 of the response at 14-17 poles and 5e-4 at 20, against at most
-# 6e-9 from the linear start), enough for two processes to print different digits. Poles the band cannot pin down are
+# keeps the better fit. The pipeline keeps the first alone: the log start's relocations amplify
+# round-off in the data (a change of 1e-15 moves some fits by 1e-6 of the response at 14-17 poles
+# and 5e-4 at 20, against at most 6e-9 from the linear start), enough for two processes to print
+# different digits. Poles the band cannot pin down are
 # held to what it supports: above the band, at least 0.5 % damping; none slower than the grid
 # resolves.
 

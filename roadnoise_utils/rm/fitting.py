@@ -337,11 +337,10 @@ def vector_fit(
         the start: lightly damped pairs evenly spread over the band suit evenly spread modes, a
         log spacing suits low-frequency features. ``("linear", "log")`` brings the paper tires'
         tasselli within 1.2x of the better of scikit-rf's and pyvectorfit's errors at 8 and 10-20
-        poles (the linear start alone: up to 1.5-6.7x), at twice the time; but where relocation
-        from the log start does not settle within ``iterations`` its iterates amplify round-off: a
-        1e-15 change of the data moved the fits from both starts by up to 1.3e-6 of the response at
-        14-17 poles and 4.6e-4 at 20 (165/65 R14 tires), against at most 6e-9 from the linear start
-        at 8-24 poles. The pipeline keeps the default.
+        poles (the linear start alone: up to 1.5-6.7x), at twice the time; but the log start's
+        relocations amplify round-off in the data: a 1e-15 change of the data moved the fits from
+        both starts by up to 1.3e-6 of the response at 14-17 poles and 4.6e-4 at 20 (165/65 R14
+        tires), against at most 6e-9 from the linear start at 8-24 poles. The pipeline keeps the default.
     proportional : bool
         Add a term :math:`e s` to the model (improper: a response that keeps rising at the top
         of the band, e.g. an admittance). The tire's footprint FRFs have none (paper Eq. 1 is

@@ -123,12 +123,8 @@ def relocate(
 
     The least squares are solved by a QR factorisation of the column-scaled real system, the
     right-hand side appended as its last column (its triangular factor then carries
-    :math:`Q^T b`). Normal equations would square the system's condition number, which reaches
-    1e6-1e9 when poles crowd (18-24 poles, or pairs started on a log scale at the lowest
-    frequencies): their solutions then follow round-off. On the 165/65 R14 tires (ring and
-    cross-section, flat road and drum, 8-24 poles over 0-250 Hz and 19-30 over 0-400 Hz) a 1e-15
-    change of the data moved the fits from the linear start by up to 2e-3 of the response with
-    normal equations (20 poles), and by at most 6e-9 with this QR.
+    :math:`Q^T b`; :func:`solve_triangular_factor`): normal equations would square the system's
+    condition number, up to about 1e10 at 20-24 poles, and their solutions would follow round-off.
     """
     g, n_s = h.shape
     n_r, n_c = real.shape[-1], upper.shape[-1]
@@ -162,7 +158,7 @@ def relocate(
     col[col == 0] = 1.0
     system[..., :k] /= col[:, None, :]
     r = np.linalg.qr(system, mode="r")
-    x = solve_square(r[:, :k, :k], r[:, :k, k]) / col  # the triangular system R x = Q^T b
+    x = solve_triangular_factor(r[:, :k, :k], r[:, :k, k]) / col
     return sigma_zeros(real, upper, x[:, m : m + n], x[:, m + n])
 
 
@@ -181,12 +177,31 @@ def sigma_zeros(real: np.ndarray, upper: np.ndarray, c_sigma: np.ndarray, d_sigm
     return np.where(tiny, -1e-6 * np.abs(zeros) + 1j * zeros.imag, zeros)
 
 
-def solve_square(matrix: np.ndarray, rhs: np.ndarray) -> np.ndarray:
-    """Solutions of a batch of square systems (G, m, m) x = (G, m); a singular one by least squares.
+def solve_triangular_factor(r: np.ndarray, rhs: np.ndarray) -> np.ndarray:
+    """Least-squares solutions of a batch of QR factors, R x = Q^T b: (G, k, k), (G, k) -> (G, k).
 
-    A starting pole set with coinciding columns makes a relocation's triangular factor (or a
-    selection's normal matrix) exactly singular: its minimum-norm least-squares solution
-    relocates the poles as well.
+    A factor whose smallest diagonal entry is below ``k`` round-offs of its largest is rank
+    deficient (coinciding poles, e.g. two slow poles confined to the same floor, give identical
+    columns, which Householder QR leaves at ~1e-16 rather than exactly 0): its minimum-norm
+    solution (:func:`numpy.linalg.lstsq`, the same cut-off), which relocates the poles as well.
+    """
+    k = r.shape[-1]
+    diagonal = np.abs(np.diagonal(r, axis1=-2, axis2=-1))
+    deficient = diagonal.min(axis=-1) <= k * np.finfo(float).eps * diagonal.max(axis=-1)
+    x = np.empty(rhs.shape)
+    full = ~deficient
+    if full.any():
+        x[full] = np.linalg.solve(r[full], rhs[full][..., None])[..., 0]
+    for i in np.nonzero(deficient)[0]:
+        x[i] = np.linalg.lstsq(r[i], rhs[i], rcond=None)[0]
+    return x
+
+
+def solve_square(matrix: np.ndarray, rhs: np.ndarray) -> np.ndarray:
+    """Solutions of a batch of square systems (G, m, m) x = (G, m); an exactly singular one by least squares.
+
+    A selection's normal matrix of a pole set with coinciding columns can be exactly singular:
+    its minimum-norm least-squares solution gives the same residual.
     """
     try:
         return np.linalg.solve(matrix, rhs[..., None])[..., 0]

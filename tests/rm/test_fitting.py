@@ -184,3 +184,23 @@ def test_fitted_poles_stay_within_what_the_band_supports(paper_fits):
         above = np.abs(fit.poles.imag) > top
         assert np.all(-fit.poles.real[above] >= vf_kernels.OUT_OF_BAND_DAMPING * np.abs(fit.poles[above]) * (1 - 1e-9))
         assert np.all(-fit.poles.real >= vf_kernels.SLOWEST_DECAY * low * (1 - 1e-9))
+
+
+def test_a_relocation_with_coinciding_poles_is_that_of_one_pole_plus_the_unmovable_twin():
+    """Two identical poles give identical columns: the least squares are rank deficient and their
+    minimum-norm solution splits the coefficient between the twins. Sigma is then the one-pole
+    sigma, and its zeros are that sigma's zero plus the twin pole itself (a mode sigma cannot
+    see). Householder QR leaves the deficient factor at ~1e-16, not 0: solved as if regular, the
+    zeros came out near -2e6."""
+    from roadnoise_utils.rm import vf_kernels
+
+    s = 1j * np.linspace(0.0, 1.0, 200)
+    h = (1.0 / (s + 0.3) + 0.2)[None, :] * np.array([[1.0], [2.0 - 0.5j]])
+    w = np.ones(h.shape)
+    upper = np.zeros((2, 0), complex)
+    pole = -0.05
+    twins = vf_kernels.relocate(s, h, w, np.full((2, 2), pole), upper)
+    single = vf_kernels.relocate(s, h, w, np.full((2, 1), pole), upper)
+    for found, alone in zip(twins, single):
+        expected = np.sort_complex(np.array([pole, alone[0]]))
+        np.testing.assert_allclose(np.sort_complex(found), expected, rtol=1e-8, atol=1e-10)
