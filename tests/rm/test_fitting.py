@@ -191,7 +191,7 @@ def test_a_relocation_with_coinciding_poles_is_that_of_one_pole_plus_the_unmovab
     minimum-norm solution splits the coefficient between the twins. Sigma is then the one-pole
     sigma, and its zeros are that sigma's zero plus the twin pole itself (a mode sigma cannot
     see). Householder QR leaves the deficient factor at ~1e-16, not 0: solved as if regular, the
-    zeros came out near -2e6."""
+    zeros of one row came out near -9e5."""
     from roadnoise_utils.rm import vf_kernels
 
     s = 1j * np.linspace(0.0, 1.0, 200)
