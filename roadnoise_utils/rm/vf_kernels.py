@@ -181,9 +181,10 @@ def solve_triangular_factor(r: np.ndarray, rhs: np.ndarray) -> np.ndarray:
     """Least-squares solutions of a batch of QR factors, R x = Q^T b: (G, k, k), (G, k) -> (G, k).
 
     A factor whose smallest diagonal entry is below ``k`` round-offs of its largest is rank
-    deficient (coinciding poles, e.g. two slow poles confined to the same floor, give identical
-    columns, which Householder QR leaves at ~1e-16 rather than exactly 0): its minimum-norm
-    solution (:func:`numpy.linalg.lstsq`, the same cut-off), which relocates the poles as well.
+    deficient: coinciding poles (e.g. two slow poles confined to the same floor) give identical
+    columns, which Householder QR leaves at ~1e-16 rather than exactly 0. Such a factor gets its
+    minimum-norm solution (:func:`numpy.linalg.lstsq`, whose cut-off is the same), which
+    relocates the poles as well; the others a plain solve.
     """
     k = r.shape[-1]
     diagonal = np.abs(np.diagonal(r, axis1=-2, axis2=-1))
