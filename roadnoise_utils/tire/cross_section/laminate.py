@@ -97,24 +97,25 @@ def transversely_isotropic(constants: dict[str, float]) -> np.ndarray:
 def bond(rotation: np.ndarray) -> np.ndarray:
     """6x6 Bond matrix ``T`` with ``C' = T C T^T`` for axes rotated by ``rotation``.
 
-    ``rotation[i, j]`` is the cosine between new axis ``i`` and old axis ``j``; engineering
-    shear strains (Bond 1943; Auld, *Acoustic Fields and Waves in Solids*, ch. 3).
+    ``rotation[..., i, j]`` is the cosine between new axis ``i`` and old axis ``j`` (leading
+    axes: a batch of rotations, e.g. one per point); engineering shear strains (Bond 1943; Auld,
+    *Acoustic Fields and Waves in Solids*, ch. 3).
     """
     a = np.asarray(rotation, float)
-    t = np.zeros((6, 6))
+    t = np.zeros(a.shape[:-2] + (6, 6))
     for row, (i, j) in enumerate(VOIGT):
         for col, (k, m) in enumerate(VOIGT):
             if col < 3:
-                t[row, col] = a[i, k] * a[j, m]
+                t[..., row, col] = a[..., i, k] * a[..., j, m]
             else:
-                t[row, col] = a[i, k] * a[j, m] + a[i, m] * a[j, k]
+                t[..., row, col] = a[..., i, k] * a[..., j, m] + a[..., i, m] * a[..., j, k]
     return t
 
 
 def rotate(c: np.ndarray, rotation: np.ndarray) -> np.ndarray:
-    """Stiffness ``c`` expressed in axes rotated by ``rotation`` (see :func:`bond`)."""
+    """Stiffness ``c`` expressed in axes rotated by ``rotation`` (see :func:`bond`; both may be batched)."""
     t = bond(rotation)
-    return t @ c @ t.T
+    return t @ c @ np.swapaxes(t, -1, -2)
 
 
 def cord_layer(constants: dict[str, float], cord_angle_deg: float) -> np.ndarray:

@@ -1,0 +1,140 @@
+"""Hyperelastic layers of the loaded tire, consistent with the cross-section tire's small-strain moduli.
+
+Every integration point carries the stiffness ``C`` of its ply (:mod:`~roadnoise_utils.tire.cross_section.laminate`:
+isotropic rubber, transversely isotropic cord-rubber plies, the smeared tread blocks). For large
+deformations it is split into the layer's rubber, a compressible neo-Hookean solid with the
+rubber's Lamé constants,
+
+.. math:: W_r = \\tfrac{\\mu}{2}(I_1 - 3) - \\mu\\ln J + \\tfrac{\\lambda}{2}(\\ln J)^2,
+
+and what the cords (or the tread's block geometry) add, ``C_f = C - C_rubber``, a
+Saint Venant-Kirchhoff term :math:`W_f = \\tfrac12 E:C_f:E` in the Green-Lagrange strain ``E``
+(Holzapfel, *Nonlinear Solid Mechanics*, 2000, sec. 6.4 and 6.5; fibre-reinforced rubber as a
+matrix plus a fibre energy: Holzapfel, Gasser & Ogden, J. Elasticity 61, 2000). At zero strain
+the tangent is exactly ``C``, so the linearised tire about the round, unloaded state is the
+cross-section tire; the cords stretch little, so their quadratic energy is where it is accurate,
+while the rubber takes the large strains.
+
+Voigt order ``[11, 22, 33, 23, 13, 12]`` with engineering shear strains, as the laminate.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..cross_section.laminate import VOIGT
+from ..cross_section.spec import CordLayer, RubberLayer, TreadLayer
+
+#: Poisson ratio of the skim rubber of a cord ply (the laminate's own Halpin-Tsai assumption).
+MATRIX_POISSON = 0.49
+
+
+def rubber_lame(layer: RubberLayer | CordLayer | TreadLayer) -> tuple[float, float]:
+    """Lamé constants ``(lambda, mu)`` (Pa) of the rubber of a construction layer.
+
+    Rubber: its own modulus and Poisson ratio. Cord ply: the skim rubber (``matrix_modulus``,
+    Poisson ratio :data:`MATRIX_POISSON`). Tread: the blocks' shear modulus ``E (1 - void) / 3``
+    and no Lamé coupling (the smeared blocks' stiffness is diagonal: grooves let them bulge).
+    """
+    if isinstance(layer, RubberLayer):
+        e, nu = layer.youngs_modulus, layer.poisson
+    elif isinstance(layer, CordLayer):
+        e, nu = layer.matrix_modulus, MATRIX_POISSON
+    elif isinstance(layer, TreadLayer):
+        return 0.0, layer.youngs_modulus * (1.0 - layer.void_ratio) / 3.0
+    else:
+        raise TypeError(f"layer of type {type(layer).__name__}: expected a rubber, cord or tread layer")
+    return e * nu / ((1 + nu) * (1 - 2 * nu)), e / (2 * (1 + nu))
+
+
+@dataclass(frozen=True, eq=False)
+class PointMaterials:
+    """The hyperelastic law at a set of points (arrays over any leading shape ``...``).
+
+    Attributes
+    ----------
+    lam, mu : ndarray (...)
+        Lamé constants of the neo-Hookean rubber (Pa).
+    fibre : ndarray (..., 6, 6)
+        The Saint Venant-Kirchhoff remainder ``C - C_rubber`` in the global axes (Pa).
+    """
+
+    lam: np.ndarray
+    mu: np.ndarray
+    fibre: np.ndarray
+
+    @classmethod
+    def from_stiffness(cls, stiffness: np.ndarray, lam: np.ndarray, mu: np.ndarray) -> PointMaterials:
+        """Split the small-strain ``stiffness`` (..., 6, 6) into the rubber of ``lam, mu`` and the rest."""
+        lam, mu = np.asarray(lam, float), np.asarray(mu, float)
+        rubber = np.zeros(stiffness.shape)
+        rubber[..., :3, :3] = lam[..., None, None]
+        idx = np.arange(6)
+        rubber[..., idx, idx] += np.where(idx < 3, 2.0, 1.0) * mu[..., None]
+        return cls(lam=lam, mu=mu, fibre=stiffness - rubber)
+
+
+def tensor(voigt: np.ndarray, shear_factor: float) -> np.ndarray:
+    """Symmetric 3x3 tensors (..., 3, 3) from Voigt vectors (..., 6); shears divided by ``shear_factor``."""
+    t = np.empty(voigt.shape[:-1] + (3, 3))
+    for col, (i, j) in enumerate(VOIGT):
+        value = voigt[..., col] / (shear_factor if i != j else 1.0)
+        t[..., i, j] = value
+        t[..., j, i] = value
+    return t
+
+
+def voigt(t: np.ndarray) -> np.ndarray:
+    """Voigt vectors (..., 6) of symmetric tensors (..., 3, 3), no shear factor (stresses)."""
+    return np.stack([t[..., i, j] for i, j in VOIGT], axis=-1)
+
+
+def stress_and_tangent(green: np.ndarray, m: PointMaterials) -> tuple[np.ndarray, np.ndarray]:
+    """Second Piola-Kirchhoff stress and its tangent at Green-Lagrange strains.
+
+    Parameters
+    ----------
+    green : ndarray (..., 6)
+        Green-Lagrange strain, Voigt with engineering shears.
+    m : PointMaterials
+
+    Returns
+    -------
+    stress : ndarray (..., 6)
+        ``S`` (Pa), Voigt.
+    tangent : ndarray (..., 6, 6)
+        :math:`\\partial S / \\partial E` (Pa), symmetric: ``C`` at zero strain.
+    """
+    c = np.eye(3) + 2.0 * tensor(green, 2.0)  # right Cauchy-Green tensor
+    inv = np.linalg.inv(c)
+    det = np.linalg.det(c)
+    if np.any(det <= 0.0):
+        raise FloatingPointError("a point of the mesh is inverted (det C <= 0): the load step is too large")
+    log_j = 0.5 * np.log(det)
+    s = m.mu[..., None, None] * (np.eye(3) - inv) + (m.lam * log_j)[..., None, None] * inv
+    stress = voigt(s) + np.einsum("...ij,...j->...i", m.fibre, green)
+    # D_ijkl = lam Ci_ij Ci_kl + (mu - lam ln J)(Ci_ik Ci_jl + Ci_il Ci_jk), Voigt pairs (i, j) and (k, l)
+    a = np.array([i for i, _ in VOIGT])
+    b = np.array([j for _, j in VOIGT])
+    inv_ik = inv[..., a[:, None], a[None, :]]
+    inv_jl = inv[..., b[:, None], b[None, :]]
+    inv_il = inv[..., a[:, None], b[None, :]]
+    inv_jk = inv[..., b[:, None], a[None, :]]
+    inv_ij = inv[..., a, b]
+    factor = (m.mu - m.lam * log_j)[..., None, None]
+    tangent = (
+        m.lam[..., None, None] * inv_ij[..., :, None] * inv_ij[..., None, :]
+        + factor * (inv_ik * inv_jl + inv_il * inv_jk)
+        + m.fibre
+    )
+    return stress, tangent
+
+
+def energy(green: np.ndarray, m: PointMaterials) -> np.ndarray:
+    """Strain energy density (J/m^3) at Green-Lagrange strains (..., 6): the potential of :func:`stress_and_tangent`."""
+    c = np.eye(3) + 2.0 * tensor(green, 2.0)
+    log_j = 0.5 * np.log(np.linalg.det(c))
+    rubber = 0.5 * m.mu * (np.trace(c, axis1=-2, axis2=-1) - 3.0) - m.mu * log_j + 0.5 * m.lam * log_j**2
+    return rubber + 0.5 * np.einsum("...i,...ij,...j->...", green, m.fibre, green)

@@ -1,0 +1,238 @@
+"""Total Lagrangian 27-node layered solids: internal forces, consistent tangent and mass.
+
+The displacement ``u`` (global Cartesian components at the nodes) gives at every integration
+point the deformation gradient :math:`F = I + \\partial u / \\partial X`, the Green-Lagrange
+strain :math:`E = \\tfrac12 (F^T F - I)` and, from the layer's law
+(:mod:`~roadnoise_utils.tire.loaded.material`), the second Piola-Kirchhoff stress ``S``. With
+:math:`\\delta E = B\\,\\delta u` (``B`` depends on ``F``), the internal force and its exact
+derivative are (Bathe, *Finite Element Procedures*, 2014, sec. 6.3; Wriggers, *Nonlinear Finite
+Element Methods*, 2008, ch. 4)
+
+.. math:: f = \\int B^T S\\,dV_0,\\qquad
+          K = \\int \\big(B^T D B + G^T \\hat S G\\big)\\,dV_0,
+
+the material and the geometric (initial-stress) parts. Each element's integration points are
+those of its section element (ply by ply through the thickness, three along the meridian) times
+three Gauss points over its arc. Elements swept from one section element share their point
+count, so they are evaluated together (:class:`ElementGroup`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+
+from ..cross_section.laminate import VOIGT, rotate
+from ..cross_section.spec import CrossSectionSpec
+from ..cross_section.waveguide import lagrange3
+from .material import PointMaterials, rubber_lame, stress_and_tangent
+from .mesh import SolidMesh
+
+#: ``PAIRS[a, j, k] = 1`` where the Voigt strain ``a`` holds ``F_ij dN/dX_k`` (shears: both orders).
+#: Gauss points around each arc for the stiffness: three, exact for the quadratic arcs. Measured on
+#: a small tire (4 crown and 2 x 2 sidewall section elements, beads clamped, no inflation): with
+#: 48 arcs of 7.5 degrees its frequencies are the waveguide tire's to 0.04 % at n = 2, 0.9 % at
+#: n = 4 and 2.5 % at n = 6; with 24 arcs of 15 degrees the bending of the thin belt over curved
+#: quadratic arcs locks (membrane locking: the midsurface cannot bend without stretching), up to
+#: 14 % high. Two points (reduced integration around the arc) unlock it, within 0.25 % at n = 6
+#: on 24 arcs, but admit a spurious mode on coarse arcs (3 Hz on 6 arcs of 60 degrees), so they
+#: are an option, not the default, until an assumed-strain treatment of the circumferential
+#: membrane strain removes the locking without it.
+ARC_POINTS = 3
+
+PAIRS = np.zeros((6, 3, 3))
+for _row, (_i, _j) in enumerate(VOIGT):
+    PAIRS[_row, _i, _j] = 1.0
+    PAIRS[_row, _j, _i] = 1.0
+
+
+def shape_functions(xi: np.ndarray, eta: np.ndarray, zeta: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """27-node shape functions (q, 27) and their parent derivatives (q, 27, 3) at points ``(xi, eta, zeta)``.
+
+    Local node ``9 c + 3 a + b``: ``a`` along the meridian (``xi``), ``b`` through the thickness
+    (``eta``), ``c`` around the arc (``zeta``), each at parent coordinates -1, 0, 1.
+    """
+    ni, di = lagrange3(xi)
+    nj, dj = lagrange3(eta)
+    nk, dk = lagrange3(zeta)
+    shape = np.einsum("cq,aq,bq->qcab", nk, ni, nj).reshape(-1, 27)
+    d = np.stack(
+        [
+            np.einsum("cq,aq,bq->qcab", nk, di, nj).reshape(-1, 27),
+            np.einsum("cq,aq,bq->qcab", nk, ni, dj).reshape(-1, 27),
+            np.einsum("cq,aq,bq->qcab", dk, ni, nj).reshape(-1, 27),
+        ],
+        axis=-1,
+    )
+    return shape, d
+
+
+@dataclass(frozen=True, eq=False)
+class ElementGroup:
+    """The elements swept from one section element, with everything their points need.
+
+    Attributes
+    ----------
+    elements : ndarray of int (m,)
+    dofs : ndarray of int (m, 81)
+        Global DOF of each element, column ``3 a + i`` for local node ``a``, component ``i``.
+    shape : ndarray (q, 27)
+        Shape functions at the points (the same in every element of the group).
+    grad : ndarray (m, q, 27, 3)
+        Reference gradients :math:`\\partial N_a / \\partial X_j` (1/m).
+    volume : ndarray (m, q)
+        Reference volume of each point (m^3): weight times Jacobian.
+    density : ndarray (q,)
+        kg/m^3.
+    compound : ndarray of int (q,)
+        Index into the section's compounds.
+    materials : PointMaterials
+        Over ``(m, q)``, in the global axes.
+    arc_points : int
+        Gauss points around each arc.
+    """
+
+    elements: np.ndarray
+    dofs: np.ndarray
+    shape: np.ndarray
+    grad: np.ndarray
+    volume: np.ndarray
+    density: np.ndarray
+    compound: np.ndarray
+    materials: PointMaterials
+    arc_points: int
+
+
+def element_groups(mesh: SolidMesh, spec: CrossSectionSpec, arc_points: int = ARC_POINTS) -> list[ElementGroup]:
+    """The mesh's elements grouped by section element, reference geometry and materials at their points.
+
+    ``arc_points`` Gauss points around each arc: :data:`ARC_POINTS` for the stiffness, 3 for the
+    mass (:func:`mass_matrix`, whose integrand needs them).
+    """
+    if arc_points not in (2, 3):
+        raise ValueError(f"arc_points = {arc_points!r}: give 2 (the stiffness) or 3 (the mass)")
+    pts = mesh.section.points
+    lame = np.array([rubber_lame(spec.layers[name]) for name in pts.layers])  # (n_layers, 2)
+    zeta, zeta_weight = np.polynomial.legendre.leggauss(arc_points)
+    groups = []
+    for e in range(mesh.section.elements.shape[0]):
+        sel = np.nonzero(pts.element == e)[0]
+        xi = np.repeat(pts.xi[sel], arc_points)
+        eta = np.repeat(pts.eta[sel], arc_points)
+        zz = np.tile(zeta, sel.size)
+        weight = np.repeat(pts.weight[sel], arc_points) * np.tile(zeta_weight, sel.size)
+        shape, d_parent = shape_functions(xi, eta, zz)
+        elements = np.nonzero(mesh.section_element == e)[0]
+        nodes = mesh.coordinates[mesh.elements[elements]]  # (m, 27, 3)
+        jac = np.einsum("maj,qak->mqjk", nodes, d_parent)  # dX_j / dparent_k
+        det = np.linalg.det(jac)  # one sign throughout (the parent axes' handedness), never zero
+        if not (np.all(det > 0.0) or np.all(det < 0.0)):
+            raise ValueError(f"section element {e}: an element swept from it is inverted or degenerate")
+        grad = np.einsum("qak,mqkj->mqaj", d_parent, np.linalg.inv(jac))
+        position = np.einsum("qa,maj->mqj", shape, nodes)
+        theta = np.arctan2(position[..., 0], -position[..., 2])
+        stiffness = rotate(np.repeat(pts.stiffness[sel], arc_points, axis=0)[None], _model_to_global(theta))
+        layer = np.repeat(pts.layer[sel], arc_points)
+        materials = PointMaterials.from_stiffness(
+            stiffness, np.broadcast_to(lame[layer, 0], theta.shape), np.broadcast_to(lame[layer, 1], theta.shape)
+        )
+        groups.append(
+            ElementGroup(
+                elements=elements,
+                dofs=(3 * mesh.elements[elements][:, :, None] + np.arange(3)).reshape(-1, 81),
+                shape=shape,
+                grad=grad,
+                volume=np.abs(det) * weight[None, :],
+                density=np.repeat(pts.density[sel], arc_points),
+                compound=np.repeat(pts.compound[sel], arc_points),
+                materials=materials,
+                arc_points=arc_points,
+            )
+        )
+    return groups
+
+
+def _model_to_global(theta: np.ndarray) -> np.ndarray:
+    """Rotations (..., 3, 3) from the section's axes ``(r, theta, y)`` to ``(x, y, z)``: ``[new, old]`` cosines."""
+    s, c = np.sin(theta), np.cos(theta)
+    z = np.zeros_like(theta)
+    o = np.ones_like(theta)
+    # e_r = (sin, 0, -cos), e_theta = (cos, 0, sin), e_y = (0, 1, 0) as the columns
+    return np.stack([np.stack([s, c, z], -1), np.stack([z, z, o], -1), np.stack([-c, s, z], -1)], -2)
+
+
+def deformation_gradient(group: ElementGroup, u: np.ndarray) -> np.ndarray:
+    """``F`` (m, q, 3, 3) of the group's elements for nodal displacements ``u`` (n_dof,)."""
+    u_e = u[group.dofs].reshape(-1, 27, 3)
+    return np.eye(3) + np.einsum("mai,mqaj->mqij", u_e, group.grad)
+
+
+def green_strain(f: np.ndarray) -> np.ndarray:
+    """Green-Lagrange strain, Voigt with engineering shears (..., 6), of deformation gradients (..., 3, 3)."""
+    c = np.einsum("...ki,...kj->...ij", f, f)
+    return np.stack([(c[..., i, j] - (i == j)) * (0.5 if i == j else 1.0) for i, j in VOIGT], axis=-1)
+
+
+def strain_operator(f: np.ndarray, grad: np.ndarray) -> np.ndarray:
+    """``B`` (m, q, 6, 81) with :math:`\\delta E = B\\,\\delta u_e` (Voigt, engineering shears)."""
+    b = np.einsum("vjk,mqij,mqak->mqvai", PAIRS, f, grad)
+    return b.reshape(*b.shape[:3], 81)
+
+
+def group_force_and_tangent(
+    group: ElementGroup, u: np.ndarray, tangent: bool = True
+) -> tuple[np.ndarray, np.ndarray | None]:
+    """Element internal forces (m, 81) and, with ``tangent``, stiffness matrices (m, 81, 81) at ``u``."""
+    f = deformation_gradient(group, u)
+    stress, d = stress_and_tangent(green_strain(f), group.materials)
+    b = strain_operator(f, group.grad)
+    force = np.einsum("mqva,mqv->ma", b, stress * group.volume[..., None])
+    if not tangent:
+        return force, None
+    m, q = group.volume.shape
+    db = np.einsum("mqvw,mqwa->mqva", d * group.volume[..., None, None], b)
+    k = np.matmul(np.swapaxes(b.reshape(m, q * 6, 81), 1, 2), db.reshape(m, q * 6, 81))
+    s = np.zeros((m, q, 3, 3))
+    for col, (i, j) in enumerate(VOIGT):
+        s[..., i, j] = s[..., j, i] = stress[..., col]
+    geo = np.einsum("mqak,mqkl,mqbl,mq->mab", group.grad, s, group.grad, group.volume)
+    k += np.einsum("mab,ij->maibj", geo, np.eye(3)).reshape(m, 81, 81)
+    return force, k
+
+
+def assemble(groups: list[ElementGroup], u: np.ndarray, n_dof: int) -> tuple[np.ndarray, sp.csr_matrix]:
+    """Global internal force (n_dof,) and tangent stiffness (sparse) at displacements ``u``."""
+    force = np.zeros(n_dof)
+    rows, cols, data = [], [], []
+    for group in groups:
+        f_e, k_e = group_force_and_tangent(group, u)
+        np.add.at(force, group.dofs, f_e)
+        rows.append(np.broadcast_to(group.dofs[:, :, None], k_e.shape).ravel())
+        cols.append(np.broadcast_to(group.dofs[:, None, :], k_e.shape).ravel())
+        data.append(k_e.ravel())
+    k = sp.csr_matrix((np.concatenate(data), (np.concatenate(rows), np.concatenate(cols))), shape=(n_dof, n_dof))
+    return force, k
+
+
+def internal_force(groups: list[ElementGroup], u: np.ndarray, n_dof: int) -> np.ndarray:
+    """Global internal force (n_dof,) at displacements ``u``, without the tangent."""
+    force = np.zeros(n_dof)
+    for group in groups:
+        np.add.at(force, group.dofs, group_force_and_tangent(group, u, tangent=False)[0])
+    return force
+
+
+def mass_matrix(groups: list[ElementGroup], n_dof: int) -> sp.csr_matrix:
+    """Consistent mass (kg), sparse, from groups with 3 points around each arc (exact for the quadratic arcs)."""
+    if any(group.arc_points < 3 for group in groups):
+        raise ValueError("the mass needs 3 Gauss points around each arc: element_groups(..., arc_points=3)")
+    rows, cols, data = [], [], []
+    for group in groups:
+        nn = np.einsum("qa,qb,q,mq->mab", group.shape, group.shape, group.density, group.volume)
+        m_e = np.einsum("mab,ij->maibj", nn, np.eye(3)).reshape(-1, 81, 81)
+        rows.append(np.broadcast_to(group.dofs[:, :, None], m_e.shape).ravel())
+        cols.append(np.broadcast_to(group.dofs[:, None, :], m_e.shape).ravel())
+        data.append(m_e.ravel())
+    return sp.csr_matrix((np.concatenate(data), (np.concatenate(rows), np.concatenate(cols))), shape=(n_dof, n_dof))
