@@ -1,0 +1,209 @@
+"""Large-deformation statics of the loaded tire: inflation, then the road pressed against it.
+
+Equilibrium is the stationary point of the total potential energy
+
+.. math:: \\Pi(u) = \\int W(E(u))\\,dV_0 - p\\,V(u),
+
+the layers' strain energy (:mod:`.material`) less the work of the follower pressure on the
+cavity volume (:mod:`.pressure`), the beads held on the rim. Newton's method solves
+:math:`\\nabla\\Pi = 0` with the consistent tangent (material, geometric and pressure load
+stiffness) and a backtracking line search on :math:`\\Pi` (Armijo), so a step never raises the
+energy (Wriggers, *Nonlinear Finite Element Methods*, 2008, ch. 5).
+
+Contact with the flat road is frictionless and one-sided on the tread surface's nodes: a node
+below the road is held on it (its vertical displacement prescribed), a held node that the road
+pulls is released. The active set is updated between Newton iterations (a primal-dual active
+set: Hintermüller, Ito & Kunisch, SIAM J. Optim. 13, 2003); once it no longer changes, the
+iterations are those of Newton's method on a fixed set of constraints and converge
+quadratically.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+
+from ..cross_section.geometry import section_mesh
+from ..cross_section.spec import CrossSectionSpec
+from . import material, pressure, solid
+from .mesh import SolidMesh, sweep
+
+#: Newton stops when the out-of-balance force is below this fraction of the applied forces, or
+#: when its correction moves no node by more than :data:`STEP_TOLERANCE` of the largest
+#: displacement (the round-off floor: the internal forces are sums of ply stresses many times
+#: the net force, e.g. in the steel belts).
+TOLERANCE = 1e-9
+STEP_TOLERANCE = 1e-11
+#: Newton iterations allowed per load step.
+MAX_ITERATIONS = 30
+
+
+@dataclass(frozen=True, eq=False)
+class LoadedTire:
+    """A tire file's cross-section swept into solids: what every static and dynamic solve needs.
+
+    Attributes
+    ----------
+    spec : CrossSectionSpec
+    mesh : SolidMesh
+    groups : list of solid.ElementGroup
+        The stiffness's integration points.
+    surface : pressure.InnerSurface
+    fixed : ndarray of int
+        DOF held on the rim (every DOF of the bead stations).
+    tread : ndarray of int
+        Nodes of the tread surface (candidates for contact).
+    """
+
+    spec: CrossSectionSpec
+    mesh: SolidMesh
+    groups: list
+    surface: pressure.InnerSurface
+    fixed: np.ndarray
+    tread: np.ndarray
+
+    @property
+    def n_dof(self) -> int:
+        return self.mesh.n_dof
+
+
+def build_loaded_tire(spec: CrossSectionSpec, arcs: np.ndarray) -> LoadedTire:
+    """Sweep the tire file's cross-section (its own mesh settings) through ``arcs`` (rad, see :func:`.mesh.graded_arcs`)."""
+    section, _ = section_mesh(spec)
+    mesh = sweep(section, arcs)
+    rings = np.arange(mesh.theta.size)
+    outer = section.node(np.arange(section.n_stations), section.n_rows - 1)
+    return LoadedTire(
+        spec=spec,
+        mesh=mesh,
+        groups=solid.element_groups(mesh, spec),
+        surface=pressure.inner_surface(mesh),
+        fixed=np.unique((3 * mesh.bead_nodes[:, None] + np.arange(3)).ravel()),
+        tread=np.ravel(mesh.node(rings[:, None], outer[None, :])),
+    )
+
+
+def strain_energy(tire: LoadedTire, u: np.ndarray) -> float:
+    """Strain energy (J) of the displacement ``u``."""
+    total = 0.0
+    for group in tire.groups:
+        green = solid.green_strain(solid.deformation_gradient(group, u))
+        total += float(np.sum(material.energy(green, group.materials) * group.volume))
+    return total
+
+
+def potential(tire: LoadedTire, u: np.ndarray, p: float) -> float:
+    """Total potential energy (J): strain energy less the pressure's work ``p V``."""
+    return strain_energy(tire, u) - p * pressure.cavity_volume(tire.mesh, tire.surface, u)
+
+
+def residual_and_tangent(tire: LoadedTire, u: np.ndarray, p: float) -> tuple[np.ndarray, sp.csr_matrix]:
+    """Out-of-balance force :math:`\\nabla\\Pi` (N) and its derivative (N/m) at ``u``, pressure ``p`` (Pa)."""
+    force, k = solid.assemble(tire.groups, u, tire.n_dof)
+    load = pressure.pressure_load(tire.mesh, tire.surface, u, p)
+    k = k - pressure.pressure_stiffness(tire.mesh, tire.surface, u, p)
+    return force - load, k.tocsr()
+
+
+@dataclass
+class StaticState:
+    """An equilibrium of the loaded tire.
+
+    Attributes
+    ----------
+    u : ndarray (n_dof,)
+        Displacement (m).
+    pressure : float
+        Pa.
+    road_lift : float
+        How far the road was raised from touching the undeformed tread (m); 0 before loading.
+    contact : ndarray of int
+        Tread nodes held on the road.
+    reactions : ndarray (n_dof,)
+        Forces of the rim and the road on the tire (N): minus the out-of-balance force at the
+        held DOF, zero elsewhere.
+    history : list of list of float
+        Per load step, the out-of-balance force of the free DOF after each Newton iteration,
+        relative to the applied forces.
+    """
+
+    u: np.ndarray
+    pressure: float
+    road_lift: float = 0.0
+    contact: np.ndarray = field(default_factory=lambda: np.zeros(0, int))
+    reactions: np.ndarray | None = None
+    history: list = field(default_factory=list)
+
+    @property
+    def road_force(self) -> float:
+        """Vertical force of the road on the tire (N, upward positive): the load carried."""
+        return float(self.reactions[3 * self.contact + 2].sum()) if self.contact.size else 0.0
+
+
+def newton(
+    tire: LoadedTire,
+    u: np.ndarray,
+    p: float,
+    held: np.ndarray,
+    held_values: np.ndarray,
+    scale: float,
+) -> tuple[np.ndarray, list[float]]:
+    """Newton iterations to equilibrium with the DOF ``held`` at ``held_values``; returns ``u`` and the residual history."""
+    u = u.copy()
+    u[held] = held_values
+    free = np.setdiff1d(np.arange(tire.n_dof), held)
+    history = []
+    for _ in range(MAX_ITERATIONS):
+        r, k = residual_and_tangent(tire, u, p)
+        size = np.linalg.norm(r[free]) / scale
+        history.append(size)
+        if size < TOLERANCE:
+            return u, history
+        step = np.zeros(tire.n_dof)
+        step[free] = spla.spsolve(k[free][:, free].tocsc(), -r[free])
+        if np.abs(step).max() <= STEP_TOLERANCE * np.abs(u).max():
+            return u + step, history
+        u = _line_search(tire, u, step, r, p)
+    raise RuntimeError(
+        f"the static solve did not converge in {MAX_ITERATIONS} Newton iterations (out-of-balance "
+        f"{history[-1]:.3g} of the load): take smaller load steps"
+    )
+
+
+def _line_search(tire: LoadedTire, u: np.ndarray, step: np.ndarray, r: np.ndarray, p: float) -> np.ndarray:
+    """``u + a step`` with the largest ``a`` of 1, 1/2, 1/4... that lowers the potential enough (Armijo)."""
+    slope = float(r @ step)
+    start = potential(tire, u, p)
+    # not a descent direction (an indefinite tangent), or a change of energy below the potential's
+    # round-off (near equilibrium): the Newton step as it is
+    if slope >= 0.0 or -slope < 1e-12 * (strain_energy(tire, u) + abs(start)):
+        return u + step
+    a = 1.0
+    for _ in range(12):
+        try:
+            if potential(tire, u + a * step, p) <= start + 1e-4 * a * slope:
+                return u + a * step
+        except FloatingPointError:  # an inverted point: the step is far too long
+            pass
+        a *= 0.5
+    return u + a * step
+
+
+def inflate(tire: LoadedTire, p: float | None = None, steps: int = 1) -> StaticState:
+    """Inflate the mounted tire to ``p`` (Pa; default the file's) in ``steps`` equal pressure steps."""
+    p = tire.spec.operating.inflation_pressure if p is None else float(p)
+    if not p > 0.0:
+        raise ValueError(f"inflation pressure = {p!r} Pa: give a positive pressure")
+    u = np.zeros(tire.n_dof)
+    history = []
+    for level in np.linspace(p / steps, p, steps):
+        scale = np.linalg.norm(pressure.pressure_load(tire.mesh, tire.surface, u, level))
+        u, steps_history = newton(tire, u, level, tire.fixed, np.zeros(tire.fixed.size), scale)
+        history.append(steps_history)
+    r, _ = residual_and_tangent(tire, u, p)
+    reactions = np.zeros(tire.n_dof)
+    reactions[tire.fixed] = -r[tire.fixed]
+    return StaticState(u=u, pressure=p, reactions=reactions, history=history)

@@ -1,0 +1,91 @@
+"""The loaded tire's follower pressure and inflation, on the small test tire (6 arcs, 3060 DOF).
+
+The pressure load is the derivative of the pressure's work on the cavity volume and its load
+stiffness that of the load; a low pressure inflates the solids as the waveguide tire's linear
+inflation; at the file's pressure Newton converges quadratically and the forces balance.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import roadnoise_utils as ru
+from roadnoise_utils.tire.cross_section.operators import harmonic_operators
+from roadnoise_utils.tire.loaded import pressure, statics
+
+SMALL = {"mesh.crown_elements": 4, "mesh.sidewall_elements": 2}
+
+
+@pytest.fixture(scope="module")
+def tire():
+    spec = ru.load_tire("165_65R14_cross_section").replace(**SMALL)
+    return statics.build_loaded_tire(spec, np.linspace(-np.pi, np.pi, 7))
+
+
+@pytest.fixture(scope="module")
+def inflated(tire):
+    return statics.inflate(tire)
+
+
+def _random_free(tire, rng, size):
+    v = size * rng.standard_normal(tire.n_dof)
+    v[tire.fixed] = 0.0
+    return v
+
+
+def test_the_pressure_load_is_the_work_s_derivative_and_its_stiffness_the_load_s(tire):
+    rng = np.random.default_rng(0)
+    u, v = _random_free(tire, rng, 1e-3), _random_free(tire, rng, 1.0)
+    h = 1e-7
+    mesh, surface = tire.mesh, tire.surface
+    load = pressure.pressure_load(mesh, surface, u, 1.0)
+    d_volume = (pressure.cavity_volume(mesh, surface, u + h * v) - pressure.cavity_volume(mesh, surface, u - h * v)) / (
+        2 * h
+    )
+    assert abs(load @ v / d_volume - 1) < 1e-7
+    stiffness = pressure.pressure_stiffness(mesh, surface, u, 1.0)
+    fd = (
+        pressure.pressure_load(mesh, surface, u + h * v, 1.0) - pressure.pressure_load(mesh, surface, u - h * v, 1.0)
+    ) / (2 * h)
+    assert np.linalg.norm(stiffness @ v - fd) < 1e-7 * np.linalg.norm(fd)
+    free = np.setdiff1d(np.arange(tire.n_dof), tire.fixed)
+    block = stiffness[free][:, free]
+    assert abs(block - block.T).max() < 1e-12 * abs(block).max()  # conservative with the beads held
+    radial = (mesh.coordinates * np.array([1.0, 0.0, 1.0])).ravel()
+    assert pressure.pressure_load(mesh, surface, np.zeros(tire.n_dof), 1.0) @ radial > 0  # pushes outwards
+
+
+def test_a_low_pressure_inflates_the_solids_as_the_waveguide_tire_s_linear_inflation(tire):
+    p = 1e3
+    state = statics.inflate(tire, p)
+    section = tire.mesh.section
+    ops = harmonic_operators(section, tire.spec.laws(), tire.spec.operating.inflation_pressure)
+    linear = ops.inflation.reshape(-1, 3) * p / tire.spec.operating.inflation_pressure
+    u = state.u.reshape(tire.mesh.theta.size, section.n_nodes, 3)
+    theta = tire.mesh.theta[:, None]
+    u_r = u[..., 0] * np.sin(theta) - u[..., 2] * np.cos(theta)
+    u_t = u[..., 0] * np.cos(theta) + u[..., 2] * np.sin(theta)
+    size = np.abs(linear).max()
+    assert np.abs(u_t).max() < 1e-9 * size  # axisymmetric: no twist...
+    # ... every arc alike (an arc's end and mid rings differ by the arcs' discretisation)
+    assert np.abs(u_r[0::2] - u_r[0]).max() < 1e-9 * size and np.abs(u_r[1::2] - u_r[1]).max() < 1e-9 * size
+    assert np.abs(u_r - linear[:, 0]).max() < 0.02 * size  # 1.3 % on 6 arcs, 0.26 % on 12
+    assert np.abs(u[..., 1] - linear[:, 2]).max() < 0.02 * size
+
+
+def test_inflation_converges_quadratically_and_balances_the_forces(tire, inflated):
+    (history,) = inflated.history
+    assert history[-1] < statics.TOLERANCE
+    tail = [h for h in history if h < 1e-2]
+    assert len(tail) >= 2
+    for before, after in zip(tail[:-1], tail[1:]):
+        assert after < 10 * before**2 or after < 1e-12
+    load = pressure.pressure_load(tire.mesh, tire.surface, inflated.u, inflated.pressure).reshape(-1, 3)
+    total = load.sum(axis=0) + inflated.reactions.reshape(-1, 3).sum(axis=0)
+    assert np.abs(total).max() < 1e-8 * np.abs(load).sum()
+
+
+def test_a_non_positive_pressure_is_refused(tire):
+    with pytest.raises(ValueError, match="inflation pressure"):
+        statics.inflate(tire, 0.0)
