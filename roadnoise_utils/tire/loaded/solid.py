@@ -166,18 +166,25 @@ def _model_to_global(theta: np.ndarray) -> np.ndarray:
 def deformation_gradient(group: ElementGroup, u: np.ndarray) -> np.ndarray:
     """``F`` (m, q, 3, 3) of the group's elements for nodal displacements ``u`` (n_dof,)."""
     u_e = u[group.dofs].reshape(-1, 27, 3)
-    return np.eye(3) + np.einsum("mai,mqaj->mqij", u_e, group.grad)
+    return np.eye(3) + np.matmul(np.swapaxes(u_e, 1, 2)[:, None], group.grad)
 
 
 def green_strain(f: np.ndarray) -> np.ndarray:
     """Green-Lagrange strain, Voigt with engineering shears (..., 6), of deformation gradients (..., 3, 3)."""
-    c = np.einsum("...ki,...kj->...ij", f, f)
+    c = np.matmul(np.swapaxes(f, -1, -2), f)
     return np.stack([(c[..., i, j] - (i == j)) * (0.5 if i == j else 1.0) for i, j in VOIGT], axis=-1)
 
 
 def strain_operator(f: np.ndarray, grad: np.ndarray) -> np.ndarray:
-    """``B`` (m, q, 6, 81) with :math:`\\delta E = B\\,\\delta u_e` (Voigt, engineering shears)."""
-    b = np.einsum("vjk,mqij,mqak->mqvai", PAIRS, f, grad)
+    """``B`` (m, q, 6, 81) with :math:`\\delta E = B\\,\\delta u_e` (Voigt, engineering shears).
+
+    Row ``(j, k)``, column ``3 a + i``: :math:`F_{ij} N_{a,k}`, plus :math:`F_{ik} N_{a,j}` for a shear.
+    """
+    b = np.empty(grad.shape[:2] + (6, 27, 3))
+    for row, (j, k) in enumerate(VOIGT):
+        b[..., row, :, :] = grad[..., :, k, None] * f[..., None, :, j]
+        if j != k:
+            b[..., row, :, :] += grad[..., :, j, None] * f[..., None, :, k]
     return b.reshape(*b.shape[:3], 81)
 
 
@@ -188,17 +195,21 @@ def group_force_and_tangent(
     f = deformation_gradient(group, u)
     stress, d = stress_and_tangent(green_strain(f), group.materials)
     b = strain_operator(f, group.grad)
-    force = np.einsum("mqva,mqv->ma", b, stress * group.volume[..., None])
+    m, q = group.volume.shape
+    flat_b = b.reshape(m, q * 6, 81)
+    force = np.matmul((stress * group.volume[..., None]).reshape(m, 1, q * 6), flat_b)[:, 0]
     if not tangent:
         return force, None
-    m, q = group.volume.shape
-    db = np.einsum("mqvw,mqwa->mqva", d * group.volume[..., None, None], b)
-    k = np.matmul(np.swapaxes(b.reshape(m, q * 6, 81), 1, 2), db.reshape(m, q * 6, 81))
+    db = np.matmul(d * group.volume[..., None, None], b).reshape(m, q * 6, 81)
+    k = np.matmul(np.swapaxes(flat_b, 1, 2), db)
     s = np.zeros((m, q, 3, 3))
     for col, (i, j) in enumerate(VOIGT):
-        s[..., i, j] = s[..., j, i] = stress[..., col]
-    geo = np.einsum("mqak,mqkl,mqbl,mq->mab", group.grad, s, group.grad, group.volume)
-    k += np.einsum("mab,ij->maibj", geo, np.eye(3)).reshape(m, 81, 81)
+        s[..., i, j] = s[..., j, i] = stress[..., col] * group.volume
+    gs = np.swapaxes(np.matmul(group.grad, s), 1, 2).reshape(m, 27, q * 3)  # [a, (q, l)]
+    geo = np.matmul(gs, np.swapaxes(group.grad, 1, 2).reshape(m, 27, q * 3).swapaxes(1, 2))
+    view = k.reshape(m, 27, 3, 27, 3)
+    for i in range(3):
+        view[:, :, i, :, i] += geo
     return force, k
 
 

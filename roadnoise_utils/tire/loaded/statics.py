@@ -39,6 +39,10 @@ TOLERANCE = 1e-9
 STEP_TOLERANCE = 1e-11
 #: Newton iterations allowed per load step.
 MAX_ITERATIONS = 30
+#: Updates of the contact set allowed per load step.
+MAX_ACTIVE_SET_UPDATES = 20
+#: A free tread node joins the contact set when below the road by more than this fraction of the lift.
+GAP_TOLERANCE = 1e-9
 
 
 @dataclass(frozen=True, eq=False)
@@ -203,7 +207,72 @@ def inflate(tire: LoadedTire, p: float | None = None, steps: int = 1) -> StaticS
         scale = np.linalg.norm(pressure.pressure_load(tire.mesh, tire.surface, u, level))
         u, steps_history = newton(tire, u, level, tire.fixed, np.zeros(tire.fixed.size), scale)
         history.append(steps_history)
+    return StaticState(u=u, pressure=p, reactions=_reactions(tire, u, p, tire.fixed), history=history)
+
+
+def _reactions(tire: LoadedTire, u: np.ndarray, p: float, held: np.ndarray) -> np.ndarray:
+    """Forces of the supports on the tire at the ``held`` DOF: the out-of-balance force there."""
     r, _ = residual_and_tangent(tire, u, p)
     reactions = np.zeros(tire.n_dof)
-    reactions[tire.fixed] = -r[tire.fixed]
-    return StaticState(u=u, pressure=p, reactions=reactions, history=history)
+    reactions[held] = r[held]
+    return reactions
+
+
+def tread_heights(tire: LoadedTire, u: np.ndarray) -> np.ndarray:
+    """Height ``z`` (m) of every tread node displaced by ``u``."""
+    return tire.mesh.coordinates[tire.tread, 2] + u[3 * tire.tread + 2]
+
+
+def press_on_flat_road(
+    tire: LoadedTire, inflated: StaticState, lift: float, steps: int = 4, start: StaticState | None = None
+) -> StaticState:
+    """The flat road raised ``lift`` (m) from touching the inflated tread, in ``steps`` equal steps; rim held.
+
+    Each step's contact set is found by a primal-dual active set: tread nodes below the road are
+    held on it, held nodes the road pulls down are released, until the set no longer changes.
+    ``start``: a loaded state of the same inflation to continue from (its lift and contact set)
+    instead of the inflated tire.
+    """
+    if not lift > 0.0:
+        raise ValueError(f"lift = {lift!r} m: give a positive road displacement")
+    touch = float(tread_heights(tire, inflated.u).min())
+    begin = inflated if start is None else start
+    u, p = begin.u.copy(), inflated.pressure
+    history = list(begin.history)
+    active = begin.contact.copy()
+    for level in np.linspace(begin.road_lift + (lift - begin.road_lift) / steps, lift, steps):
+        road = touch + level
+        active = np.union1d(active, tire.tread[tread_heights(tire, u) < road])
+        for _ in range(MAX_ACTIVE_SET_UPDATES):
+            held = np.concatenate([tire.fixed, 3 * active + 2])
+            values = np.concatenate([np.zeros(tire.fixed.size), road - tire.mesh.coordinates[active, 2]])
+            scale = np.linalg.norm(pressure.pressure_load(tire.mesh, tire.surface, u, p))
+            u, step_history = newton(tire, u, p, held, values, scale)
+            r, _ = residual_and_tangent(tire, u, p)
+            pulled = active[r[3 * active + 2] < 0.0]
+            below = tire.tread[tread_heights(tire, u) < road - GAP_TOLERANCE * lift]
+            below = np.setdiff1d(below, active)
+            if not pulled.size and not below.size:
+                break
+            active = np.union1d(np.setdiff1d(active, pulled), below)
+        else:
+            raise RuntimeError(f"the contact set did not settle in {MAX_ACTIVE_SET_UPDATES} updates: take more steps")
+        history.append(step_history)
+    held = np.concatenate([tire.fixed, 3 * active + 2])
+    return StaticState(
+        u=u, pressure=p, road_lift=lift, contact=active, reactions=_reactions(tire, u, p, held), history=history
+    )
+
+
+def vertical_stiffness(tire: LoadedTire, state: StaticState) -> float:
+    r"""Tangent vertical stiffness (N/m) of a loaded state: the road's force per road lift, contact set held.
+
+    The condensed tangent: the road's DOF moved by one, the free DOF in equilibrium,
+    :math:`K_v = \sum_{road} (K_{rr} + K_{rf} \Delta u_f)` with :math:`K_{ff}\Delta u_f = -K_{fr} 1`.
+    """
+    _, k = residual_and_tangent(tire, state.u, state.pressure)
+    road = 3 * state.contact + 2
+    free = np.setdiff1d(np.arange(tire.n_dof), np.concatenate([tire.fixed, road]))
+    moved = np.asarray(k[free][:, road].sum(axis=1)).ravel()
+    du = spla.spsolve(k[free][:, free].tocsc(), -moved)
+    return float(k[road][:, road].sum() + np.asarray(k[road][:, free] @ du).sum())

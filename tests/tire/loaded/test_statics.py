@@ -89,3 +89,40 @@ def test_inflation_converges_quadratically_and_balances_the_forces(tire, inflate
 def test_a_non_positive_pressure_is_refused(tire):
     with pytest.raises(ValueError, match="inflation pressure"):
         statics.inflate(tire, 0.0)
+
+
+@pytest.fixture(scope="module")
+def loaded(tire, inflated):
+    return statics.press_on_flat_road(tire, inflated, 0.005, steps=2)
+
+
+def test_pressed_on_the_flat_road_the_contact_is_one_sided_symmetric_and_balanced(tire, inflated, loaded):
+    assert loaded.road_force > 0.0
+    contact = 3 * loaded.contact + 2
+    assert np.all(loaded.reactions[contact] >= 0.0)  # the road only pushes...
+    road = statics.tread_heights(tire, inflated.u).min() + loaded.road_lift
+    heights = statics.tread_heights(tire, loaded.u)
+    np.testing.assert_allclose(heights[np.isin(tire.tread, loaded.contact)], road, rtol=0, atol=1e-12)
+    assert heights.min() >= road - 1e-12  # ... and no tread node is below it
+    x = tire.mesh.coordinates[loaded.contact, 0]
+    np.testing.assert_allclose(np.sort(x), np.sort(-x), atol=1e-12)  # the footprint is symmetric fore and aft
+    rim = loaded.reactions[2::3].sum() - loaded.road_force
+    assert abs(rim + loaded.road_force) < 1e-9 * loaded.road_force  # the rim carries what the road pushes
+    for step in loaded.history:
+        tail = [h for h in step if h < 1e-2]
+        assert step[-1] < statics.TOLERANCE and all(
+            after < 10 * before**2 or after < 1e-12 for before, after in zip(tail[:-1], tail[1:])
+        )
+
+
+def test_the_tangent_vertical_stiffness_is_the_derivative_of_the_road_force(tire, inflated, loaded):
+    k_v = statics.vertical_stiffness(tire, loaded)
+    nudged = statics.press_on_flat_road(tire, inflated, loaded.road_lift * (1 + 1e-4), steps=1, start=loaded)
+    assert np.array_equal(nudged.contact, loaded.contact)
+    secant = (nudged.road_force - loaded.road_force) / (1e-4 * loaded.road_lift)
+    assert abs(secant / k_v - 1) < 1e-4
+
+
+def test_a_road_that_does_not_rise_is_refused(tire, inflated):
+    with pytest.raises(ValueError, match="lift"):
+        statics.press_on_flat_road(tire, inflated, 0.0)
