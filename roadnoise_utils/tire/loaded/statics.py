@@ -26,6 +26,7 @@ import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from ..banded import BandedCholesky
 from ..cross_section.geometry import section_mesh
 from ..cross_section.spec import CrossSectionSpec
 from . import material, pressure, solid
@@ -147,6 +148,20 @@ class StaticState:
         return float(self.reactions[3 * self.contact + 2].sum()) if self.contact.size else 0.0
 
 
+def solve_tangent(matrix: sp.spmatrix, rhs: np.ndarray) -> np.ndarray:
+    """``matrix``:math:`^{-1}` ``rhs`` for a symmetric tangent of the free DOF.
+
+    The tangent of a stable state is positive definite: a banded Cholesky factor after reverse
+    Cuthill-McKee (:class:`~roadnoise_utils.tire.banded.BandedCholesky`; the closed circumference's
+    band is about two rings of nodes wide). A tangent that is not (an intermediate Newton state,
+    the pressure's load stiffness ahead of the pre-stress it builds) falls back to SuperLU.
+    """
+    try:
+        return BandedCholesky(matrix).solve(rhs)
+    except np.linalg.LinAlgError:
+        return spla.spsolve(sp.csc_matrix(matrix), rhs)
+
+
 def newton(
     tire: LoadedTire,
     u: np.ndarray,
@@ -167,7 +182,7 @@ def newton(
         if size < TOLERANCE:
             return u, history
         step = np.zeros(tire.n_dof)
-        step[free] = spla.spsolve(k[free][:, free].tocsc(), -r[free])
+        step[free] = solve_tangent(k[free][:, free], -r[free])
         if np.abs(step).max() <= STEP_TOLERANCE * np.abs(u).max():
             return u + step, history
         u = _line_search(tire, u, step, r, p)
@@ -274,5 +289,5 @@ def vertical_stiffness(tire: LoadedTire, state: StaticState) -> float:
     road = 3 * state.contact + 2
     free = np.setdiff1d(np.arange(tire.n_dof), np.concatenate([tire.fixed, road]))
     moved = np.asarray(k[free][:, road].sum(axis=1)).ravel()
-    du = spla.spsolve(k[free][:, free].tocsc(), -moved)
+    du = solve_tangent(k[free][:, free], -moved)
     return float(k[road][:, road].sum() + np.asarray(k[road][:, free] @ du).sum())

@@ -24,9 +24,9 @@ import scipy.sparse.linalg as spla
 from tqdm.auto import tqdm
 
 from ... import guards
+from ..banded import banded_sum
 from ..cavity import CavityCoupling
 from ..model import FRFResult
-from .banded import banded_sum
 from .loaded import LoadedTire, loaded_tire
 from .mechanics import FETModel
 from .static import StaticState

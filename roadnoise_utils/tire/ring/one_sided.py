@@ -9,9 +9,9 @@ from threadpoolctl import threadpool_limits
 from ... import guards
 from ...road.cleat import point_heights
 from ..active_set import held_contact
+from ..banded import BandedCholesky
 from ..contact import ContactRun, time_steps
 from ..rubber import PronyBranches, SharedPronyStates, prony_series
-from .banded import BandedCholesky
 from .mechanics import UZ, FETModel
 from .static import StaticState, check_same_tire, contact_problem
 

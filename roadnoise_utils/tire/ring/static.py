@@ -26,10 +26,10 @@ import pandas as pd
 
 from ... import guards
 from ..active_set import active_set
+from ..banded import BandedCholesky
 from ..model import Footprint, check_load
 from ..surface import RoadSurface, make_road
 from ..tasselli import Tasselli, tassellate
-from .banded import BandedCholesky
 from .mechanics import UZ, FETModel
 from .spec import TireSpec, to_dict
 

@@ -5,7 +5,7 @@ import pytest
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
-from roadnoise_utils.tire.ring.banded import BandedCholesky, banded_sum
+from roadnoise_utils.tire.banded import BandedCholesky, banded_sum
 
 
 def closed_ring(n: int, width: int = 3) -> sp.csr_array:
