@@ -164,9 +164,18 @@ def _model_to_global(theta: np.ndarray) -> np.ndarray:
 
 
 def deformation_gradient(group: ElementGroup, u: np.ndarray) -> np.ndarray:
-    """``F`` (m, q, 3, 3) of the group's elements for nodal displacements ``u`` (n_dof,)."""
+    """``F`` (m, q, 3, 3) of the group's elements for nodal displacements ``u`` (n_dof,).
+
+    Raises
+    ------
+    FloatingPointError
+        A point is inverted (``det F <= 0``): no physical state, the step that led there too long.
+    """
     u_e = u[group.dofs].reshape(-1, 27, 3)
-    return np.eye(3) + np.matmul(np.swapaxes(u_e, 1, 2)[:, None], group.grad)
+    f = np.eye(3) + np.matmul(np.swapaxes(u_e, 1, 2)[:, None], group.grad)
+    if not np.all(np.linalg.det(f) > 0.0):
+        raise FloatingPointError("a point of the mesh is inverted (det F <= 0): the load step is too large")
+    return f
 
 
 def green_strain(f: np.ndarray) -> np.ndarray:

@@ -12,14 +12,20 @@ energy (Wriggers, *Nonlinear Finite Element Methods*, 2008, ch. 5).
 
 Contact with the flat road is frictionless and one-sided on the tread surface's nodes: a node
 below the road is held on it (its vertical displacement prescribed), a held node that the road
-pulls is released. The active set is updated between Newton iterations (a primal-dual active
-set: Hintermüller, Ito & Kunisch, SIAM J. Optim. 13, 2003); once it no longer changes, the
-iterations are those of Newton's method on a fixed set of constraints and converge
-quadratically.
+pulls is released. The active set is updated inside Newton's iterations once the out-of-balance
+force is small (a primal-dual active set: Hintermüller, Ito & Kunisch, SIAM J. Optim. 13, 2003);
+once it no longer changes, the iterations are those of Newton's method on a fixed set of
+constraints and converge quadratically. Newly held nodes reach the road by a predictor, the
+free DOF following by the tangent, so a road step of millimetres does not crush the elements at
+the footprint's edge; no step is accepted that inverts a point of the mesh.
+
+Each Newton iteration solves the tangent of the free DOF by a banded Cholesky factor
+(:class:`~roadnoise_utils.tire.banded.BandedCholesky`), about two rings of nodes wide.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -42,6 +48,8 @@ STEP_TOLERANCE = 1e-11
 MAX_ITERATIONS = 30
 #: Updates of the contact set allowed per load step.
 MAX_ACTIVE_SET_UPDATES = 20
+#: The contact set is updated once the out-of-balance force is below this fraction of the applied forces.
+ACTIVE_SET_TOLERANCE = 1e-3
 #: A free tread node joins the contact set when below the road by more than this fraction of the lift.
 GAP_TOLERANCE = 1e-9
 
@@ -130,9 +138,9 @@ class StaticState:
     reactions : ndarray (n_dof,)
         Forces of the rim and the road on the tire (N): minus the out-of-balance force at the
         held DOF, zero elsewhere.
-    history : list of list of float
-        Per load step, the out-of-balance force of the free DOF after each Newton iteration,
-        relative to the applied forces.
+    history : list of list of list of float
+        Per load step and per contact set (one for inflation), the out-of-balance force of the
+        free DOF at each Newton iteration, relative to the applied forces.
     """
 
     u: np.ndarray
@@ -169,27 +177,77 @@ def newton(
     held: np.ndarray,
     held_values: np.ndarray,
     scale: float,
-) -> tuple[np.ndarray, list[float]]:
-    """Newton iterations to equilibrium with the DOF ``held`` at ``held_values``; returns ``u`` and the residual history."""
+    update: Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray] | None] | None = None,
+) -> tuple[np.ndarray, list[list[float]]]:
+    """Newton iterations to equilibrium with the DOF ``held`` at ``held_values``.
+
+    An iteration that moves held DOF to new values moves the free ones by the tangent at ``u``
+    (a predictor: imposed on the held DOF alone, a road step of millimetres would crush the
+    elements at the footprint's edge into a state whose tangent is indefinite). ``update(u, r)``,
+    called once the out-of-balance force ``r`` is below :data:`ACTIVE_SET_TOLERANCE`, gives new
+    held DOF and values (the contact set) or ``None`` to keep them; the iterations end at
+    equilibrium with the set unchanged, so once it settles they are Newton's on fixed constraints.
+
+    Returns
+    -------
+    u : ndarray
+        The equilibrium (m).
+    history : list of list of float
+        The out-of-balance force of the free DOF relative to ``scale`` at each iteration, one list
+        per held set (a new list when ``update`` changes it).
+    """
     u = u.copy()
-    u[held] = held_values
     free = np.setdiff1d(np.arange(tire.n_dof), held)
-    history = []
+    moved = np.asarray(held_values, float) - u[held]
+    history, updates, tiny_step = [[]], 0, False
     for _ in range(MAX_ITERATIONS):
         r, k = residual_and_tangent(tire, u, p)
         size = np.linalg.norm(r[free]) / scale
-        history.append(size)
-        if size < TOLERANCE:
+        history[-1].append(size)
+        converged = tiny_step or size < TOLERANCE
+        if update is not None and not moved.any() and size < ACTIVE_SET_TOLERANCE:
+            changed = update(u, r)
+            if changed is not None:
+                updates += 1
+                if updates > MAX_ACTIVE_SET_UPDATES:
+                    raise RuntimeError(
+                        f"the contact set did not settle in {MAX_ACTIVE_SET_UPDATES} updates: take more load steps"
+                    )
+                held, held_values = changed
+                free = np.setdiff1d(np.arange(tire.n_dof), held)
+                moved = np.asarray(held_values, float) - u[held]
+                converged = tiny_step = False
+                history.append([])
+        if converged and not moved.any():
             return u, history
         step = np.zeros(tire.n_dof)
-        step[free] = solve_tangent(k[free][:, free], -r[free])
-        if np.abs(step).max() <= STEP_TOLERANCE * np.abs(u).max():
-            return u + step, history
-        u = _line_search(tire, u, step, r, p)
+        k_free = k[free]
+        if moved.any():
+            step[held] = moved
+            step[free] = solve_tangent(k_free[:, free], -r[free] - k_free[:, held] @ moved)
+            part = _admissible_part(tire, u, step)
+            u, moved = u + part * step, (1.0 - part) * moved
+            continue
+        step[free] = solve_tangent(k_free[:, free], -r[free])
+        tiny_step = np.abs(step).max() <= STEP_TOLERANCE * np.abs(u).max()
+        u = u + step if tiny_step else _line_search(tire, u, step, r, p)
     raise RuntimeError(
         f"the static solve did not converge in {MAX_ITERATIONS} Newton iterations (out-of-balance "
-        f"{history[-1]:.3g} of the load): take smaller load steps"
+        f"{size:.3g} of the load): take smaller load steps"
     )
+
+
+def _admissible_part(tire: LoadedTire, u: np.ndarray, step: np.ndarray) -> float:
+    """The largest of 1, 1/2, 1/4... of ``step`` that inverts no point of the mesh."""
+    part = 1.0
+    for _ in range(12):
+        try:
+            for group in tire.groups:
+                solid.deformation_gradient(group, u + part * step)
+            return part
+        except FloatingPointError:
+            part *= 0.5
+    raise FloatingPointError("the road's step inverts the mesh however it is divided: take smaller load steps")
 
 
 def _line_search(tire: LoadedTire, u: np.ndarray, step: np.ndarray, r: np.ndarray, p: float) -> np.ndarray:
@@ -197,9 +255,9 @@ def _line_search(tire: LoadedTire, u: np.ndarray, step: np.ndarray, r: np.ndarra
     slope = float(r @ step)
     start = potential(tire, u, p)
     # not a descent direction (an indefinite tangent), or a change of energy below the potential's
-    # round-off (near equilibrium): the Newton step as it is
+    # round-off (near equilibrium): the Newton step, shortened only where it would invert the mesh
     if slope >= 0.0 or -slope < 1e-12 * (strain_energy(tire, u) + abs(start)):
-        return u + step
+        return u + _admissible_part(tire, u, step) * step
     a = 1.0
     for _ in range(12):
         try:
@@ -208,7 +266,7 @@ def _line_search(tire: LoadedTire, u: np.ndarray, step: np.ndarray, r: np.ndarra
         except FloatingPointError:  # an inverted point: the step is far too long
             pass
         a *= 0.5
-    return u + a * step
+    return u + _admissible_part(tire, u, a * step) * a * step
 
 
 def inflate(tire: LoadedTire, p: float | None = None, steps: int = 1) -> StaticState:
@@ -238,6 +296,30 @@ def tread_heights(tire: LoadedTire, u: np.ndarray) -> np.ndarray:
     return tire.mesh.coordinates[tire.tread, 2] + u[3 * tire.tread + 2]
 
 
+class _RoadContact:
+    """The tread nodes held on a flat road at height ``road`` (m), and their primal-dual update."""
+
+    def __init__(self, tire: LoadedTire, road: float, gap_tolerance: float, active: np.ndarray):
+        self.tire, self.road, self.gap_tolerance, self.active = tire, road, gap_tolerance, active
+
+    def constraints(self) -> tuple[np.ndarray, np.ndarray]:
+        """Held DOF (the rim's, the contact nodes' vertical) and their displacements (m)."""
+        tire = self.tire
+        held = np.concatenate([tire.fixed, 3 * self.active + 2])
+        heights = self.road - tire.mesh.coordinates[self.active, 2]
+        return held, np.concatenate([np.zeros(tire.fixed.size), heights])
+
+    def update(self, u: np.ndarray, r: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
+        """Release the held nodes the road pulls, hold the free ones below it; ``None`` if none."""
+        pulled = self.active[r[3 * self.active + 2] < 0.0]
+        below = self.tire.tread[tread_heights(self.tire, u) < self.road - self.gap_tolerance]
+        below = np.setdiff1d(below, self.active)
+        if not pulled.size and not below.size:
+            return None
+        self.active = np.union1d(np.setdiff1d(self.active, pulled), below)
+        return self.constraints()
+
+
 def press_on_flat_road(
     tire: LoadedTire, inflated: StaticState, lift: float, steps: int = 4, start: StaticState | None = None
 ) -> StaticState:
@@ -258,21 +340,11 @@ def press_on_flat_road(
     for level in np.linspace(begin.road_lift + (lift - begin.road_lift) / steps, lift, steps):
         road = touch + level
         active = np.union1d(active, tire.tread[tread_heights(tire, u) < road])
-        for _ in range(MAX_ACTIVE_SET_UPDATES):
-            held = np.concatenate([tire.fixed, 3 * active + 2])
-            values = np.concatenate([np.zeros(tire.fixed.size), road - tire.mesh.coordinates[active, 2]])
-            scale = np.linalg.norm(pressure.pressure_load(tire.mesh, tire.surface, u, p))
-            u, step_history = newton(tire, u, p, held, values, scale)
-            r, _ = residual_and_tangent(tire, u, p)
-            pulled = active[r[3 * active + 2] < 0.0]
-            below = tire.tread[tread_heights(tire, u) < road - GAP_TOLERANCE * lift]
-            below = np.setdiff1d(below, active)
-            if not pulled.size and not below.size:
-                break
-            active = np.union1d(np.setdiff1d(active, pulled), below)
-        else:
-            raise RuntimeError(f"the contact set did not settle in {MAX_ACTIVE_SET_UPDATES} updates: take more steps")
+        contact = _RoadContact(tire, road, GAP_TOLERANCE * lift, active)
+        scale = np.linalg.norm(pressure.pressure_load(tire.mesh, tire.surface, u, p))
+        u, step_history = newton(tire, u, p, *contact.constraints(), scale, update=contact.update)
         history.append(step_history)
+        active = contact.active
     held = np.concatenate([tire.fixed, 3 * active + 2])
     return StaticState(
         u=u, pressure=p, road_lift=lift, contact=active, reactions=_reactions(tire, u, p, held), history=history

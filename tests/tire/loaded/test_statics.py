@@ -12,7 +12,7 @@ import pytest
 
 import roadnoise_utils as ru
 from roadnoise_utils.tire.cross_section.operators import harmonic_operators
-from roadnoise_utils.tire.loaded import pressure, statics
+from roadnoise_utils.tire.loaded import pressure, solid, statics
 
 SMALL = {"mesh.crown_elements": 4, "mesh.sidewall_elements": 2}
 
@@ -75,7 +75,7 @@ def test_a_low_pressure_inflates_the_solids_as_the_waveguide_tire_s_linear_infla
 
 
 def test_inflation_converges_quadratically_and_balances_the_forces(tire, inflated):
-    (history,) = inflated.history
+    ((history,),) = inflated.history
     assert history[-1] < statics.TOLERANCE
     tail = [h for h in history if h < 1e-2]
     assert len(tail) >= 2
@@ -108,9 +108,9 @@ def test_pressed_on_the_flat_road_the_contact_is_one_sided_symmetric_and_balance
     np.testing.assert_allclose(np.sort(x), np.sort(-x), atol=1e-12)  # the footprint is symmetric fore and aft
     rim = loaded.reactions[2::3].sum() - loaded.road_force
     assert abs(rim + loaded.road_force) < 1e-9 * loaded.road_force  # the rim carries what the road pushes
-    for step in loaded.history:
-        tail = [h for h in step if h < 1e-2]
-        assert step[-1] < statics.TOLERANCE and all(
+    for step in loaded.history:  # on the step's last contact set
+        tail = [h for h in step[-1] if h < 1e-2]
+        assert step[-1][-1] < statics.TOLERANCE and all(
             after < 10 * before**2 or after < 1e-12 for before, after in zip(tail[:-1], tail[1:])
         )
 
@@ -126,3 +126,19 @@ def test_the_tangent_vertical_stiffness_is_the_derivative_of_the_road_force(tire
 def test_a_road_that_does_not_rise_is_refused(tire, inflated):
     with pytest.raises(ValueError, match="lift"):
         statics.press_on_flat_road(tire, inflated, 0.0)
+
+
+def test_the_loaded_state_does_not_depend_on_the_load_steps(tire, inflated, loaded):
+    """Elastic and frictionless: one road step of the whole lift reaches the two steps' equilibrium."""
+    one_step = statics.press_on_flat_road(tire, inflated, loaded.road_lift, steps=1)
+    assert np.array_equal(one_step.contact, loaded.contact)
+    assert abs(one_step.road_force / loaded.road_force - 1) < 1e-9
+    assert np.abs(one_step.u - loaded.u).max() < 1e-9 * np.abs(loaded.u).max()
+
+
+def test_an_inverted_point_is_refused(tire):
+    """``det F <= 0`` is no state of a solid: the deformation gradient refuses it instead of giving an energy."""
+    reflected = -2.0 * tire.mesh.coordinates.ravel()  # every point to its mirror image through the axle: F = -I
+    with pytest.raises(FloatingPointError, match="inverted"):
+        solid.deformation_gradient(tire.groups[0], reflected)
+    assert np.linalg.det(solid.deformation_gradient(tire.groups[0], -0.4 * tire.mesh.coordinates.ravel())).min() > 0
