@@ -16,8 +16,8 @@ pulls is released. The active set is updated inside Newton's iterations once the
 force is small (a primal-dual active set: Hintermüller, Ito & Kunisch, SIAM J. Optim. 13, 2003);
 once it no longer changes, the iterations are those of Newton's method on a fixed set of
 constraints and converge quadratically. Newly held nodes reach the road by a predictor, the
-free DOF following by the tangent, so a road step of millimetres does not crush the elements at
-the footprint's edge; no step is accepted that inverts a point of the mesh.
+free DOF following by the tangent, so a road step of millimetres does not distort the elements at
+the footprint's edge alone; no step is accepted that inverts a point of the mesh.
 
 Each Newton iteration solves the tangent of the free DOF by a banded Cholesky factor
 (:class:`~roadnoise_utils.tire.banded.BandedCholesky`), about two rings of nodes wide.
@@ -182,7 +182,7 @@ def newton(
     """Newton iterations to equilibrium with the DOF ``held`` at ``held_values``.
 
     An iteration that moves held DOF to new values moves the free ones by the tangent at ``u``
-    (a predictor: imposed on the held DOF alone, a road step of millimetres would crush the
+    (a predictor: imposed on the held DOF alone, a road step of millimetres distorts the
     elements at the footprint's edge into a state whose tangent is indefinite). ``update(u, r)``,
     called once the out-of-balance force ``r`` is below :data:`ACTIVE_SET_TOLERANCE`, gives new
     held DOF and values (the contact set) or ``None`` to keep them; the iterations end at
@@ -285,7 +285,7 @@ def inflate(tire: LoadedTire, p: float | None = None, steps: int = 1) -> StaticS
 
 def _reactions(tire: LoadedTire, u: np.ndarray, p: float, held: np.ndarray) -> np.ndarray:
     """Forces of the supports on the tire at the ``held`` DOF: the out-of-balance force there."""
-    r, _ = residual_and_tangent(tire, u, p)
+    r = solid.internal_force(tire.groups, u, tire.n_dof) - pressure.pressure_load(tire.mesh, tire.surface, u, p)
     reactions = np.zeros(tire.n_dof)
     reactions[held] = r[held]
     return reactions
