@@ -67,13 +67,45 @@ class PointMaterials:
 
     @classmethod
     def from_stiffness(cls, stiffness: np.ndarray, lam: np.ndarray, mu: np.ndarray) -> PointMaterials:
-        """Split the small-strain ``stiffness`` (..., 6, 6) into the rubber of ``lam, mu`` and the rest."""
+        r"""Split the small-strain ``stiffness`` (..., 6, 6) into the rubber of ``lam, mu`` and the rest.
+
+        The remainder must be positive semi-definite: a Saint Venant-Kirchhoff energy with a negative
+        direction has no stable large-strain response, and a cord ply's own transverse bulk stiffness
+        (the laminate's) is lower than its skim rubber's at Poisson ratio 0.49 (-131 MPa and -201 MPa
+        along one direction of the carcass and the belts). Where it would not be, ``lam`` is lowered
+        to the largest value that keeps it so, :math:`\lambda = 1 / (m^T A^{+} m)` with
+        :math:`A = C - 2\mu I` and :math:`m = [1, 1, 1, 0, 0, 0]`; the sum, and so the small-strain
+        stiffness, is unchanged.
+        """
         lam, mu = np.asarray(lam, float), np.asarray(mu, float)
-        rubber = np.zeros(stiffness.shape)
-        rubber[..., :3, :3] = lam[..., None, None]
-        idx = np.arange(6)
-        rubber[..., idx, idx] += np.where(idx < 3, 2.0, 1.0) * mu[..., None]
+        lam = np.minimum(lam, _largest_lambda(stiffness, mu))
+        rubber = _isotropic(lam, mu, stiffness.shape)
         return cls(lam=lam, mu=mu, fibre=stiffness - rubber)
+
+
+def _isotropic(lam: np.ndarray, mu: np.ndarray, shape: tuple) -> np.ndarray:
+    """Isotropic stiffness (..., 6, 6) of Lamé constants ``lam, mu``, Voigt with engineering shears."""
+    rubber = np.zeros(shape)
+    rubber[..., :3, :3] = lam[..., None, None]
+    idx = np.arange(6)
+    rubber[..., idx, idx] += np.where(idx < 3, 2.0, 1.0) * mu[..., None]
+    return rubber
+
+
+def _largest_lambda(stiffness: np.ndarray, mu: np.ndarray) -> np.ndarray:
+    """The largest ``lam`` with ``stiffness - C_iso(lam, mu)`` positive semi-definite (Pa): ``1 / (m^T A^+ m)``.
+
+    ``A`` (the stiffness less the rubber's shear part) is semi-definite, singular for a rubber
+    layer (``A = lam m m^T``), so its pseudo-inverse on the eigenvalues above round-off.
+    """
+    shear_part = stiffness - _isotropic(np.zeros_like(mu), mu, stiffness.shape)
+    values, vectors = np.linalg.eigh(shear_part)
+    floor = 1e-9 * np.abs(values).max(axis=-1, keepdims=True)
+    if np.any(values < -floor):
+        raise ValueError("the rubber's shear modulus exceeds what the layer's stiffness holds in some direction")
+    along = vectors[..., :3, :].sum(axis=-2)  # m^T v for every eigenvector v
+    inverse = np.where(values > floor, 1.0 / np.where(values > floor, values, 1.0), 0.0)
+    return 1.0 / np.sum(along**2 * inverse, axis=-1)
 
 
 def tensor(voigt: np.ndarray, shear_factor: float) -> np.ndarray:

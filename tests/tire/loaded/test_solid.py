@@ -20,6 +20,7 @@ import roadnoise_utils as ru
 from roadnoise_utils.tire.cross_section.geometry import section_mesh
 from roadnoise_utils.tire.cross_section.laminate import rotate
 from roadnoise_utils.tire.cross_section.operators import harmonic_operators
+from roadnoise_utils.tire.cross_section.spec import CordLayer
 from roadnoise_utils.tire.cross_section.waveguide import harmonic_weight, point_geometry
 from roadnoise_utils.tire.loaded import material, solid
 from roadnoise_utils.tire.loaded.mesh import GROWTH, graded_arcs, sweep
@@ -116,6 +117,28 @@ def test_at_zero_strain_the_tangent_is_the_layer_s_small_strain_stiffness(small)
         local = rotate(tangent, np.swapaxes(solid._model_to_global(theta), -1, -2))
         expected = np.repeat(section.points.stiffness[sel], group.arc_points, axis=0)
         np.testing.assert_allclose(local, np.broadcast_to(expected, local.shape), rtol=0, atol=1e-9 * expected.max())
+
+
+def test_each_layer_s_remainder_beside_its_rubber_is_positive_semi_definite(small):
+    """The Saint Venant-Kirchhoff remainder ``C - C_rubber`` has no negative direction at any point (a
+    negative one gives the large-strain law a spurious instability: the cord plies' skim rubber at
+    Poisson ratio 0.49 is stiffer in bulk than the ply), and only the cord plies' rubber is softened."""
+    spec, _ = small
+    _, groups = swept(small, 6)
+    for group in groups:
+        m = group.materials
+        smallest = np.linalg.eigvalsh(m.fibre)[..., 0]
+        assert np.all(smallest >= -1e-9 * (m.lam + 2 * m.mu)), smallest.min()
+    lowered = {layer: 0 for layer in spec.layers}
+    points = section_mesh(spec)[0].points
+    for e, group in enumerate(groups):
+        names = np.repeat(np.asarray(points.layers)[points.layer[points.element == e]], group.arc_points)
+        nominal = np.array([material.rubber_lame(spec.layers[name])[0] for name in names])
+        for name in names[np.any(group.materials.lam < nominal * (1 - 1e-12), axis=0)]:
+            lowered[name] += 1
+    assert {name for name, n in lowered.items() if n} == {
+        name for name, layer in spec.layers.items() if isinstance(layer, CordLayer)
+    }
 
 
 def test_the_tangent_is_the_derivative_of_the_internal_force(small):
