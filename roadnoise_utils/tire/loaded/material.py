@@ -3,7 +3,8 @@
 Every integration point carries the stiffness ``C`` of its ply (:mod:`~roadnoise_utils.tire.cross_section.laminate`:
 isotropic rubber, transversely isotropic cord-rubber plies, the smeared tread blocks). For large
 deformations it is split into the layer's rubber, a compressible neo-Hookean solid with the
-rubber's Lamé constants,
+rubber's Lamé constants (a cord ply's ``lambda`` lowered where the ply is softer in bulk than its
+skim rubber, so that the remainder below has no negative direction: :meth:`PointMaterials.from_stiffness`),
 
 .. math:: W_r = \\tfrac{\\mu}{2}(I_1 - 3) - \\mu\\ln J + \\tfrac{\\lambda}{2}(\\ln J)^2,
 
