@@ -97,7 +97,8 @@ def _largest_lambda(stiffness: np.ndarray, mu: np.ndarray) -> np.ndarray:
     """The largest ``lam`` with ``stiffness - C_iso(lam, mu)`` positive semi-definite (Pa): ``1 / (m^T A^+ m)``.
 
     ``A`` (the stiffness less the rubber's shear part) is semi-definite, singular for a rubber
-    layer (``A = lam m m^T``), so its pseudo-inverse on the eigenvalues above round-off.
+    layer (``A = lam m m^T``), so its pseudo-inverse on the eigenvalues above round-off; where
+    ``m`` has a part in ``A``'s null space no positive ``lam`` keeps the remainder so: 0.
     """
     shear_part = stiffness - _isotropic(np.zeros_like(mu), mu, stiffness.shape)
     values, vectors = np.linalg.eigh(shear_part)
@@ -105,8 +106,11 @@ def _largest_lambda(stiffness: np.ndarray, mu: np.ndarray) -> np.ndarray:
     if np.any(values < -floor):
         raise ValueError("the rubber's shear modulus exceeds what the layer's stiffness holds in some direction")
     along = vectors[..., :3, :].sum(axis=-2)  # m^T v for every eigenvector v
-    inverse = np.where(values > floor, 1.0 / np.where(values > floor, values, 1.0), 0.0)
-    return 1.0 / np.sum(along**2 * inverse, axis=-1)
+    kept = values > floor
+    inverse = np.where(kept, 1.0 / np.where(kept, values, 1.0), 0.0)
+    in_null_space = np.sum(np.where(kept, 0.0, along**2), axis=-1) > 1e-12
+    reciprocal = np.sum(along**2 * inverse, axis=-1)
+    return np.where(in_null_space, 0.0, 1.0 / np.where(in_null_space, 1.0, reciprocal))
 
 
 def tensor(voigt: np.ndarray, shear_factor: float) -> np.ndarray:

@@ -141,6 +141,26 @@ def test_each_layer_s_remainder_beside_its_rubber_is_positive_semi_definite(smal
     }
 
 
+def test_the_rubber_s_lambda_is_capped_where_the_layer_is_softer_in_bulk():
+    """Closed forms: an isotropic layer keeps its rubber whole; a layer with no bulk coupling beyond the
+    rubber's shear keeps none of its lambda; any other split leaves a singular semi-definite remainder."""
+    mu = np.full(2, 1e6)
+    isotropic = np.zeros((2, 6, 6))
+    isotropic[:, :3, :3] = 5e7
+    isotropic[:, np.arange(6), np.arange(6)] += np.array([2, 2, 2, 1, 1, 1]) * 1e6
+    whole = material.PointMaterials.from_stiffness(isotropic, np.full(2, 5e7), mu)
+    np.testing.assert_allclose(whole.lam, 5e7, rtol=1e-12)
+    assert np.abs(whole.fibre).max() < 1e-6 * 5e7
+    diagonal = np.broadcast_to(np.diag([2e6, 2e6, 2e6, 1e6, 1e6, 1e6]), (2, 6, 6))
+    assert np.all(material.PointMaterials.from_stiffness(diagonal, np.full(2, 5e7), mu).lam == 0.0)
+    rng = np.random.default_rng(0)
+    a = rng.standard_normal((2, 6, 6)) * 1e4
+    capped = material.PointMaterials.from_stiffness(a @ np.swapaxes(a, 1, 2) + isotropic, np.full(2, 1e9), mu)
+    assert np.all(capped.lam < 1e9)
+    smallest = np.linalg.eigvalsh(capped.fibre)[:, :2]
+    assert np.all(np.abs(smallest[:, 0]) < 1e-6 * smallest[:, 1])  # singular: lambda is as large as it can be
+
+
 def test_the_tangent_is_the_derivative_of_the_internal_force(small):
     mesh, groups = swept(small, 6)
     rng = np.random.default_rng(2)
