@@ -1,4 +1,4 @@
-"""The loaded tire's follower pressure and inflation, on the small test tire (6 arcs, 3060 DOF).
+"""The loaded tire's follower pressure, inflation and flat road, on the small test tire (``conftest``).
 
 The pressure load is the derivative of the pressure's work on the cavity volume and its load
 stiffness that of the load; a low pressure inflates the solids as the waveguide tire's linear
@@ -10,22 +10,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-import roadnoise_utils as ru
 from roadnoise_utils.tire.cross_section.operators import harmonic_operators
 from roadnoise_utils.tire.loaded import pressure, solid, statics
-
-SMALL = {"mesh.crown_elements": 4, "mesh.sidewall_elements": 2}
-
-
-@pytest.fixture(scope="module")
-def tire():
-    spec = ru.load_tire("165_65R14_cross_section").replace(**SMALL)
-    return statics.build_loaded_tire(spec, np.linspace(-np.pi, np.pi, 7))
-
-
-@pytest.fixture(scope="module")
-def inflated(tire):
-    return statics.inflate(tire)
 
 
 def _random_free(tire, rng, size):
