@@ -11,12 +11,16 @@ the swept solids take arcs of ``--arcs`` (m) over the footprint sector (+-0.28 r
 60 mm. For each loaded mesh:
 
 1. build, inflation and the tread's compliance about the inflated state (times);
-2. the flat road on the solids linearised about the inflated state (the geometric nonlinearity
-   switched off) beside the waveguide tire, both by the same contact solve, at 1-4.5 kN:
-   deflection and tangent K_v, and their ratio;
+2. the flat road on the solids linearised as the waveguide tire (about the round tire,
+   pre-stressed by the linear inflation) and about the inflated state (the loading's geometric
+   nonlinearity switched off), beside the waveguide tire, all by the same contact solve, at
+   1-4.5 kN: deflection and tangent K_v;
 3. the nonlinear loading in road steps of ``--step`` (m) up to the file's load: per step the
    road force, the tangent K_v, the footprint (length x width of the held nodes), the
    linearised tire's force at the same lift, and the time.
+
+``--modes N`` first compares the inflated, unloaded modes n = 0..6 on N uniform arcs with the
+waveguide's: each solid mode's harmonic is the one that carries most of its displacement.
 """
 
 from __future__ import annotations
@@ -25,10 +29,14 @@ import argparse
 import time
 
 import numpy as np
+import scipy.linalg as sla
+import scipy.sparse.linalg as spla
 
 import roadnoise_utils as ru
+from roadnoise_utils.tire.banded import BandedCholesky
 from roadnoise_utils.tire.cross_section import static as section_static
-from roadnoise_utils.tire.loaded import linearised, statics
+from roadnoise_utils.tire.cross_section.operators import harmonic_operators
+from roadnoise_utils.tire.loaded import linearised, solid, statics
 from roadnoise_utils.tire.loaded.mesh import graded_arcs
 
 LOADS = (1000.0, 2000.0, 3000.0, 4512.0)
@@ -47,15 +55,75 @@ def waveguide(spec, loads) -> list:
     return states
 
 
-def compare_linearised(compliance: linearised.ContactCompliance, states: list) -> None:
-    print("  load N | deflection mm solids / waveguide | K_v N/mm solids / waveguide (ratio)")
+def compare_linearised(round_tire, inflated, states: list) -> None:
+    print("  load N | deflection mm: round / inflated / waveguide | K_v N/mm: round / inflated / waveguide")
     for state in states:
-        linear = linearised.flat_road_at_load(compliance, state.load)
+        a, b = (linearised.flat_road_at_load(c, state.load) for c in (round_tire, inflated))
         print(
-            f"  {state.load:6.0f} | {linear.deflection * 1e3:6.2f} / {state.deflection * 1e3:6.2f}"
-            f" | {linear.stiffness / 1e3:6.1f} / {state.vertical_stiffness / 1e3:6.1f}"
-            f" ({linear.stiffness / state.vertical_stiffness:.3f})"
+            f"  {state.load:6.0f} | {a.deflection * 1e3:6.2f} / {b.deflection * 1e3:6.2f} / {state.deflection * 1e3:6.2f}"
+            f" | {a.stiffness / 1e3:6.1f} / {b.stiffness / 1e3:6.1f} / {state.vertical_stiffness / 1e3:6.1f}"
         )
+
+
+def harmonic_of_modes(tire, vectors: np.ndarray, top: int = 10) -> np.ndarray:
+    """The circumferential harmonic carrying most of each mode's displacement (least squares over the rings).
+
+    The displacement is taken in cylindrical components (radial, circumferential, lateral): a
+    harmonic of those is one of the tire, whereas the Cartesian ones mix ``n`` with ``n +- 1``.
+    """
+    theta = tire.mesh.theta
+    basis = np.concatenate(
+        [np.cos(np.outer(theta, np.arange(top + 1))), np.sin(np.outer(theta, np.arange(1, top + 1)))], 1
+    )
+    u = vectors.T.reshape(vectors.shape[1], theta.size, -1, 3)  # (mode, ring, node, xyz)
+    s, c = np.sin(theta)[:, None], np.cos(theta)[:, None]
+    cylindrical = np.stack([u[..., 0] * s - u[..., 2] * c, u[..., 0] * c + u[..., 2] * s, u[..., 1]], -1)
+    harmonics = []
+    for field in cylindrical.reshape(vectors.shape[1], theta.size, -1):
+        coefficients = np.linalg.lstsq(basis, field, rcond=None)[0]
+        energy = (coefficients**2).sum(1)
+        harmonics.append(int(np.argmax(np.concatenate([energy[:1], energy[1 : top + 1] + energy[top + 1 :]]))))
+    return np.array(harmonics)
+
+
+def compare_modes(spec, n_arcs: int, count: int = 40) -> None:
+    tire = statics.build_loaded_tire(spec, np.linspace(-np.pi, np.pi, n_arcs + 1))
+    free = np.setdiff1d(np.arange(tire.n_dof), tire.fixed)
+    mass = solid.mass_matrix(tire.groups, tire.n_dof)[free][:, free].tocsc()
+    ops = harmonic_operators(tire.mesh.section, spec.laws(), spec.operating.inflation_pressure)
+    reference = {}
+    for n in range(7):
+        k = ops.stiffness(n, storage_only=True).toarray()[np.ix_(ops.free, ops.free)]
+        m = ops.mass_matrix(n).toarray()[np.ix_(ops.free, ops.free)]
+        reference[n] = np.sqrt(sla.eigh(k, m, eigvals_only=True, subset_by_index=[0, 1])) / (2 * np.pi)
+    inflated = statics.inflate(tire)
+    tangents = {
+        "round": linearised.round_linearisation(tire).tangent,
+        "inflated": statics.residual_and_tangent(tire, inflated.u, inflated.pressure)[1],
+    }
+    found = {}
+    for name, k in tangents.items():
+        k_free = k[free][:, free]
+        inverse = spla.LinearOperator(k_free.shape, matvec=BandedCholesky(k_free).solve, dtype=float)
+        values, vectors = spla.eigsh(k_free.tocsc(), k=count, M=mass, sigma=0.0, OPinv=inverse)
+        full = np.zeros((tire.n_dof, count))
+        full[free] = vectors
+        order = np.argsort(values)
+        harmonics = harmonic_of_modes(tire, full[:, order])
+        for n in range(7):
+            f = np.sqrt(values[order][harmonics == n]) / (2 * np.pi)
+            found[name, n] = f if n == 0 else f[::2]  # n > 0: the cos and sin pair
+    print(
+        f"modes on {n_arcs} uniform arcs ({tire.n_dof} DOF), inflated and unloaded, Hz (deviation from the waveguide):"
+    )
+    print("  n  # | waveguide | round                | inflated")
+    for n in range(7):
+        for j, f_ref in enumerate(reference[n]):
+            cells = []
+            for name in tangents:
+                f = found[name, n]
+                cells.append(f"{f[j]:7.2f} ({100 * (f[j] / f_ref - 1):+5.2f} %)" if j < f.size else "    -")
+            print(f"  {n}  {j} | {f_ref:9.2f} | {cells[0]:20s} | {cells[1]}")
 
 
 def load_nonlinear(tire, inflated, compliance, load: float, step: float) -> None:
@@ -85,10 +153,13 @@ def main() -> None:
     parser.add_argument("--arcs", type=float, nargs="+", default=[0.02])
     parser.add_argument("--step", type=float, default=0.001)
     parser.add_argument("--no-nonlinear", dest="nonlinear", action="store_false")
+    parser.add_argument("--modes", type=int, default=0, help="uniform arcs for the modes' comparison (0: none)")
     args = parser.parse_args()
     # one contact column per tassello column: the coarse crown's tread nodes are ~15 mm apart
     section = {"mesh.crown_elements": args.crown, "mesh.sidewall_elements": args.sidewall}
     spec = ru.load_tire(args.tire).replace(**section, **{"tasselli.strips_per_column": 1})
+    if args.modes:
+        compare_modes(spec, args.modes)
     states = waveguide(spec, LOADS)
     for arc in args.arcs:
         t0 = time.perf_counter()
@@ -98,11 +169,13 @@ def main() -> None:
         t2 = time.perf_counter()
         compliance = linearised.contact_compliance(tire, inflated)
         t3 = time.perf_counter()
+        rounded = linearised.round_linearisation(tire)
+        round_compliance = linearised.contact_compliance(tire, rounded.state, tangent=rounded.tangent)
         print(
             f"solids, {arc * 1e3:.0f} mm arcs: {tire.n_dof} DOF; build {t1 - t0:.1f} s, inflation {t2 - t1:.1f} s, "
             f"compliance of {compliance.nodes.size} tread nodes {t3 - t2:.1f} s"
         )
-        compare_linearised(compliance, states)
+        compare_linearised(round_compliance, compliance, states)
         if args.nonlinear:
             load_nonlinear(tire, inflated, compliance, spec.operating.vertical_load, args.step)
 

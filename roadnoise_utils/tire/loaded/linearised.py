@@ -10,6 +10,13 @@ both. The two tires then differ only by their discretisations, which is how the 
 checked against the waveguide; the nonlinear loaded state (:func:`.statics.press_on_flat_road`)
 differs from this one by the geometric nonlinearity alone, and tends to it as the road's lift
 tends to zero.
+
+The waveguide tire linearises once more: about the round, unstressed tire, with the stress of its
+linear inflation (:func:`round_linearisation`, :func:`.solid.prestressed_tangent`). On the same
+section the solids then have its frequencies to the discretisation; the exact tangent at the
+inflated state differs from it by the nonlinear inflation (on the 165/65 R14 at 2.3 bar: the
+inflation's largest displacement 0.76 mm against the linear 0.96 mm, the n = 0 and 1 modes 3 %
+lower).
 """
 
 from __future__ import annotations
@@ -17,10 +24,12 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import scipy.sparse as sp
 
 from ... import guards
 from ..active_set import active_set, held_contact
 from ..banded import BandedCholesky
+from . import pressure, solid
 from .statics import LoadedTire, StaticState, residual_and_tangent, tread_heights
 
 #: Default depth (m) of the band of tread nodes above the lowest that may touch the road.
@@ -80,10 +89,48 @@ class LinearisedContact:
         return float(self.forces.sum())
 
 
-def contact_compliance(tire: LoadedTire, state: StaticState, depth: float = CONTACT_DEPTH) -> ContactCompliance:
+@dataclass(frozen=True)
+class RoundLinearisation:
+    """The solids linearised as the waveguide tire: about the round tire, pre-stressed by its linear inflation.
+
+    Attributes
+    ----------
+    state : StaticState
+        The round tire at the pressure (no displacement): the geometry the road's gaps are taken on.
+    inflation : ndarray (n_dof,)
+        Displacement of the linear inflation (m).
+    tangent : scipy.sparse.csr_matrix
+        Small-strain stiffness, the geometric stiffness of the inflation's stress and the pressure's
+        load stiffness on the round tire (N/m).
+    """
+
+    state: StaticState
+    inflation: np.ndarray
+    tangent: sp.csr_matrix
+
+
+def round_linearisation(tire: LoadedTire, p: float | None = None) -> RoundLinearisation:
+    """:class:`RoundLinearisation` at pressure ``p`` (Pa; default the tire file's)."""
+    p = tire.spec.operating.inflation_pressure if p is None else guards.real("p", p, 0.0, lo_open=True, unit="Pa")
+    round_tire = np.zeros(tire.n_dof)
+    stiffness = solid.prestressed_tangent(tire.groups, round_tire, tire.n_dof)
+    free = np.setdiff1d(np.arange(tire.n_dof), tire.fixed)
+    inflation = np.zeros(tire.n_dof)
+    load = pressure.pressure_load(tire.mesh, tire.surface, round_tire, p)
+    inflation[free] = BandedCholesky(stiffness[free][:, free]).solve(load[free])
+    tangent = solid.prestressed_tangent(tire.groups, inflation, tire.n_dof) - pressure.pressure_stiffness(
+        tire.mesh, tire.surface, round_tire, p
+    )
+    return RoundLinearisation(StaticState(u=round_tire, pressure=p), inflation, tangent.tocsr())
+
+
+def contact_compliance(
+    tire: LoadedTire, state: StaticState, depth: float = CONTACT_DEPTH, tangent: sp.spmatrix | None = None
+) -> ContactCompliance:
     """The tread's vertical compliance about ``state`` (the rim held, every other node free), see :class:`ContactCompliance`.
 
-    One banded Cholesky factor of the tangent and one solve per candidate node.
+    ``tangent``: the stiffness to invert (N/m); default the exact tangent at ``state``. One banded
+    Cholesky factor and one solve per candidate node.
     """
     depth = guards.real("depth", depth, 0.0, 0.5, lo_open=True, unit="m")
     heights = tread_heights(tire, state.u)
@@ -92,7 +139,7 @@ def contact_compliance(tire: LoadedTire, state: StaticState, depth: float = CONT
     nodes = tire.tread[candidate]
     free = np.setdiff1d(np.arange(tire.n_dof), tire.fixed)
     guards.check_memory(8.0 * free.size * nodes.size, f"the compliance of {nodes.size} tread nodes", "depth")
-    _, k = residual_and_tangent(tire, state.u, state.pressure)
+    k = residual_and_tangent(tire, state.u, state.pressure)[1] if tangent is None else sp.csr_matrix(tangent)
     rows = np.searchsorted(free, 3 * nodes + 2)
     unit = np.zeros((free.size, nodes.size))
     unit[rows, np.arange(nodes.size)] = 1.0

@@ -207,8 +207,13 @@ def group_force_and_tangent(
     m, q = group.volume.shape
     flat_b = b.reshape(m, q * 6, 81)
     force = np.matmul((stress * group.volume[..., None]).reshape(m, 1, q * 6), flat_b)[:, 0]
-    if not tangent:
-        return force, None
+    return force, (_element_tangent(group, b, d, stress) if tangent else None)
+
+
+def _element_tangent(group: ElementGroup, b: np.ndarray, d: np.ndarray, stress: np.ndarray) -> np.ndarray:
+    """Element stiffness (m, 81, 81): material part from ``B`` and ``D``, geometric part from the stress ``S``."""
+    m, q = group.volume.shape
+    flat_b = b.reshape(m, q * 6, 81)
     db = np.matmul(d * group.volume[..., None, None], b).reshape(m, q * 6, 81)
     k = np.matmul(np.swapaxes(flat_b, 1, 2), db)
     s = np.zeros((m, q, 3, 3))
@@ -219,21 +224,45 @@ def group_force_and_tangent(
     view = k.reshape(m, 27, 3, 27, 3)
     for i in range(3):
         view[:, :, i, :, i] += geo
-    return force, k
+    return k
+
+
+def _assemble_blocks(groups: list[ElementGroup], blocks: list[np.ndarray], n_dof: int) -> sp.csr_matrix:
+    """Global sparse matrix of the element matrices ``blocks`` (one array per group)."""
+    rows = [np.broadcast_to(g.dofs[:, :, None], k_e.shape).ravel() for g, k_e in zip(groups, blocks)]
+    cols = [np.broadcast_to(g.dofs[:, None, :], k_e.shape).ravel() for g, k_e in zip(groups, blocks)]
+    data = np.concatenate([k_e.ravel() for k_e in blocks])
+    return sp.csr_matrix((data, (np.concatenate(rows), np.concatenate(cols))), shape=(n_dof, n_dof))
 
 
 def assemble(groups: list[ElementGroup], u: np.ndarray, n_dof: int) -> tuple[np.ndarray, sp.csr_matrix]:
     """Global internal force (n_dof,) and tangent stiffness (sparse) at displacements ``u``."""
     force = np.zeros(n_dof)
-    rows, cols, data = [], [], []
+    blocks = []
     for group in groups:
         f_e, k_e = group_force_and_tangent(group, u)
         np.add.at(force, group.dofs, f_e)
-        rows.append(np.broadcast_to(group.dofs[:, :, None], k_e.shape).ravel())
-        cols.append(np.broadcast_to(group.dofs[:, None, :], k_e.shape).ravel())
-        data.append(k_e.ravel())
-    k = sp.csr_matrix((np.concatenate(data), (np.concatenate(rows), np.concatenate(cols))), shape=(n_dof, n_dof))
-    return force, k
+        blocks.append(k_e)
+    return force, _assemble_blocks(groups, blocks, n_dof)
+
+
+def prestressed_tangent(groups: list[ElementGroup], u: np.ndarray, n_dof: int) -> sp.csr_matrix:
+    r"""Stiffness of the undeformed solids carrying the linear-elastic stress of the small displacement ``u`` (N/m).
+
+    :math:`K = \int (B_0^T D_0 B_0 + G^T \hat\sigma G)\,dV_0` with :math:`\sigma = D_0 B_0 u`: the
+    linearisation of a pre-stressed structure about its unstressed geometry (the deformation's
+    own change of geometry and the strain's quadratic part left out), as the waveguide tire takes
+    its inflation. :func:`assemble` at the inflated state is the exact tangent instead.
+    """
+    blocks = []
+    for group in groups:
+        f = np.broadcast_to(np.eye(3), group.grad.shape[:2] + (3, 3))
+        b = strain_operator(f, group.grad)
+        _, d = stress_and_tangent(np.zeros(group.volume.shape + (6,)), group.materials)
+        u_e = u[group.dofs].reshape(-1, 1, 81, 1)
+        stress = np.matmul(d, np.matmul(b, u_e))[..., 0]
+        blocks.append(_element_tangent(group, b, d, stress))
+    return _assemble_blocks(groups, blocks, n_dof)
 
 
 def internal_force(groups: list[ElementGroup], u: np.ndarray, n_dof: int) -> np.ndarray:
@@ -248,11 +277,8 @@ def mass_matrix(groups: list[ElementGroup], n_dof: int) -> sp.csr_matrix:
     """Consistent mass (kg), sparse, from groups with 3 points around each arc (exact for the quadratic arcs)."""
     if any(group.arc_points < 3 for group in groups):
         raise ValueError("the mass needs 3 Gauss points around each arc: element_groups(..., arc_points=3)")
-    rows, cols, data = [], [], []
+    blocks = []
     for group in groups:
         nn = np.einsum("qa,qb,q,mq->mab", group.shape, group.shape, group.density, group.volume)
-        m_e = np.einsum("mab,ij->maibj", nn, np.eye(3)).reshape(-1, 81, 81)
-        rows.append(np.broadcast_to(group.dofs[:, :, None], m_e.shape).ravel())
-        cols.append(np.broadcast_to(group.dofs[:, None, :], m_e.shape).ravel())
-        data.append(m_e.ravel())
-    return sp.csr_matrix((np.concatenate(data), (np.concatenate(rows), np.concatenate(cols))), shape=(n_dof, n_dof))
+        blocks.append(np.einsum("mab,ij->maibj", nn, np.eye(3)).reshape(-1, 81, 81))
+    return _assemble_blocks(groups, blocks, n_dof)
