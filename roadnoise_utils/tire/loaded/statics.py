@@ -32,6 +32,7 @@ import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from ... import guards
 from ..banded import BandedCholesky
 from ..cross_section.geometry import section_mesh
 from ..cross_section.spec import CrossSectionSpec
@@ -141,6 +142,9 @@ class StaticState:
     history : list of list of list of float
         Per load step and per contact set (one for inflation), the out-of-balance force of the
         free DOF at each Newton iteration, relative to the applied forces.
+    stable : bool or None
+        Whether the state is a minimum of the potential with its supports and contact set held
+        (:func:`is_stable`); ``None`` when not checked.
     """
 
     u: np.ndarray
@@ -149,6 +153,7 @@ class StaticState:
     contact: np.ndarray = field(default_factory=lambda: np.zeros(0, int))
     reactions: np.ndarray | None = None
     history: list = field(default_factory=list)
+    stable: bool | None = None
 
     @property
     def road_force(self) -> float:
@@ -168,6 +173,22 @@ def solve_tangent(matrix: sp.spmatrix, rhs: np.ndarray) -> np.ndarray:
         return BandedCholesky(matrix).solve(rhs)
     except np.linalg.LinAlgError:
         return spla.spsolve(sp.csc_matrix(matrix), rhs)
+
+
+def is_stable(tire: LoadedTire, state: StaticState) -> bool:
+    """Whether ``state`` is a minimum of the potential, the rim and the contact nodes' heights held.
+
+    Newton's method finds any stationary point; a saddle is an equilibrium the tire would leave
+    (e.g. the belt wrinkling in the footprint). The tangent of the free DOF is positive definite
+    at a minimum: its Cholesky factor exists.
+    """
+    _, k = residual_and_tangent(tire, state.u, state.pressure)
+    free = np.setdiff1d(np.arange(tire.n_dof), np.concatenate([tire.fixed, 3 * state.contact + 2]))
+    try:
+        BandedCholesky(k[free][:, free])
+    except np.linalg.LinAlgError:
+        return False
+    return True
 
 
 def newton(
@@ -327,6 +348,8 @@ def press_on_flat_road(
 
     Each step's contact set is found by a primal-dual active set: tread nodes below the road are
     held on it, held nodes the road pulls down are released, until the set no longer changes.
+    The final state's stability is checked (:func:`is_stable`); a saddle gets a
+    :class:`~roadnoise_utils.guards.RoadnoiseWarning`.
     ``start``: a loaded state of the same inflation to continue from (its lift and contact set)
     instead of the inflated tire.
     """
@@ -346,9 +369,18 @@ def press_on_flat_road(
         history.append(step_history)
         active = contact.active
     held = np.concatenate([tire.fixed, 3 * active + 2])
-    return StaticState(
+    state = StaticState(
         u=u, pressure=p, road_lift=lift, contact=active, reactions=_reactions(tire, u, p, held), history=history
     )
+    state.stable = is_stable(tire, state)
+    if not state.stable:
+        guards.warn(
+            f"the loaded state at a lift of {lift * 1e3:.3g} mm ({state.road_force:.0f} N) is a saddle of the "
+            "potential, not a minimum: its tangent has a negative direction (e.g. the belt wrinkling in the "
+            "footprint between the nodes of a coarse mesh), so its stiffness and footprint are those of an "
+            "equilibrium the tire would leave; refine the mesh over the footprint or lower the load"
+        )
+    return state
 
 
 def vertical_stiffness(tire: LoadedTire, state: StaticState) -> float:
