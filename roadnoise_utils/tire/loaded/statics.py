@@ -88,6 +88,10 @@ def build_loaded_tire(spec: CrossSectionSpec, arcs: np.ndarray) -> LoadedTire:
     """Sweep the tire file's cross-section (its own mesh settings) through ``arcs`` (rad, see :func:`.mesh.graded_arcs`)."""
     section, _ = section_mesh(spec)
     mesh = sweep(section, arcs)
+    n_elements = mesh.elements.shape[0]
+    guards.check_memory(  # the tangent's assembly: row, column and value of every element entry, then CSR
+        n_elements * 81**2 * 8.0 * 4, f"the tangent of {n_elements} solid elements", "arcs"
+    )
     rings = np.arange(mesh.theta.size)
     outer = section.node(np.arange(section.n_stations), section.n_rows - 1)
     return LoadedTire(
@@ -295,6 +299,7 @@ def inflate(tire: LoadedTire, p: float | None = None, steps: int = 1) -> StaticS
     p = tire.spec.operating.inflation_pressure if p is None else float(p)
     if not p > 0.0:
         raise ValueError(f"inflation pressure = {p!r} Pa: give a positive pressure")
+    steps = guards.integer("steps", steps, 1)
     u = np.zeros(tire.n_dof)
     history = []
     for level in np.linspace(p / steps, p, steps):
@@ -355,7 +360,15 @@ def press_on_flat_road(
     """
     if not lift > 0.0:
         raise ValueError(f"lift = {lift!r} m: give a positive road displacement")
+    steps = guards.integer("steps", steps, 1)
     touch = float(tread_heights(tire, inflated.u).min())
+    rim = float(tire.mesh.coordinates[tire.mesh.bead_nodes, 2].min()) - touch  # the rim's lowest point above the road
+    if lift >= rim:
+        raise ValueError(
+            f"lift = {lift!r} m: valid range is (0, {rim:.4g}) m; the road would reach the rim (the tire bottoms)"
+        )
+    if start is not None and start.pressure != inflated.pressure:
+        raise ValueError(f"start is a state at {start.pressure:g} Pa, the inflated tire at {inflated.pressure:g} Pa")
     begin = inflated if start is None else start
     u, p = begin.u.copy(), inflated.pressure
     history = list(begin.history)

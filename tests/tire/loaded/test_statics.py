@@ -143,3 +143,18 @@ def test_a_saddle_reached_by_the_loading_is_reported(tire, inflated, loaded, mon
     with pytest.warns(RoadnoiseWarning, match="saddle"):
         state = statics.press_on_flat_road(tire, inflated, loaded.road_lift, steps=1, start=loaded)
     assert state.stable is False
+
+
+def test_load_steps_a_lift_that_bottoms_the_tire_or_a_foreign_start_are_refused(tire, inflated, loaded):
+    for steps in (0, -1, 2.5, "2"):
+        with pytest.raises(ValueError, match="steps"):
+            statics.press_on_flat_road(tire, inflated, 0.001, steps=steps)
+    with pytest.raises(ValueError, match="steps"):
+        statics.inflate(tire, steps=0)
+    rim = tire.mesh.coordinates[tire.mesh.bead_nodes, 2].min() - statics.tread_heights(tire, inflated.u).min()
+    assert 0.08 < rim < 0.15  # the 165/65 R14's section height, 107 mm, and the rim's flange
+    with pytest.raises(ValueError, match="bottoms"):
+        statics.press_on_flat_road(tire, inflated, rim)
+    softer = statics.StaticState(u=loaded.u, pressure=0.5 * inflated.pressure, road_lift=loaded.road_lift)
+    with pytest.raises(ValueError, match="start"):
+        statics.press_on_flat_road(tire, inflated, 0.006, start=softer)
