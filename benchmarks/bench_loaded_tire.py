@@ -17,7 +17,9 @@ the swept solids take arcs of ``--arcs`` (m) over the footprint sector (+-0.28 r
    1-4.5 kN: deflection and tangent K_v;
 3. the nonlinear loading in road steps of ``--step`` (m) up to the file's load: per step the
    road force, the tangent K_v, the footprint (length x width of the held nodes), the
-   linearised tire's force at the same lift, the time, and whether the state is a minimum of
+   linearised tire's force at the same lift, the time, the least acoustic eigenvalue over the
+   points (negative where a layer's law has lost strong ellipticity:
+   :func:`roadnoise_utils.tire.loaded.solid.ellipticity`), and whether the state is a minimum of
    the potential or a saddle (:func:`roadnoise_utils.tire.loaded.statics.is_stable`).
 
 ``--modes N`` first compares the inflated, unloaded modes n = 0..6 on N uniform arcs with the
@@ -130,7 +132,9 @@ def compare_modes(spec, n_arcs: int, count: int = 40) -> None:
 
 
 def load_nonlinear(tire, inflated, compliance, load: float, step: float) -> None:
-    print("  lift mm | force N (linearised) | K_v N/mm | footprint mm | s | minimum of the potential")
+    print(
+        "  lift mm | force N (linearised) | K_v N/mm | footprint mm | s | least acoustic eigenvalue MPa | minimum of the potential"
+    )
     state, lift, t_total = None, 0.0, time.perf_counter()
     while state is None or state.road_force < load:
         lift += step
@@ -142,9 +146,10 @@ def load_nonlinear(tire, inflated, compliance, load: float, step: float) -> None
         k_v = statics.vertical_stiffness(tire, state)
         length, width = footprint(tire, state)
         linear = linearised.flat_road_at_lift(compliance, lift).load
+        acoustic = min(float(v.min()) for v in solid.ellipticity(tire.groups, state.u))
         print(
             f"  {lift * 1e3:7.1f} | {state.road_force:7.0f} ({linear:7.0f}) | {k_v / 1e3:6.1f}"
-            f" | {length * 1e3:5.1f} x {width * 1e3:5.1f} | {seconds:5.1f} | {'yes' if state.stable else 'no: a saddle'}",
+            f" | {length * 1e3:5.1f} x {width * 1e3:5.1f} | {seconds:5.1f} | {acoustic / 1e6:7.1f} | {'yes' if state.stable else 'no: a saddle'}",
             flush=True,
         )
     print(f"  loaded to {state.road_force:.0f} N in {time.perf_counter() - t_total:.0f} s")

@@ -169,9 +169,46 @@ def stress_and_tangent(green: np.ndarray, m: PointMaterials) -> tuple[np.ndarray
     return stress, tangent
 
 
+def green_strain(f: np.ndarray) -> np.ndarray:
+    """Green-Lagrange strain, Voigt with engineering shears (..., 6), of deformation gradients (..., 3, 3)."""
+    c = np.matmul(np.swapaxes(f, -1, -2), f)
+    return np.stack([(c[..., i, j] - (i == j)) * (0.5 if i == j else 1.0) for i, j in VOIGT], axis=-1)
+
+
 def energy(green: np.ndarray, m: PointMaterials) -> np.ndarray:
     """Strain energy density (J/m^3) at Green-Lagrange strains (..., 6): the potential of :func:`stress_and_tangent`."""
     c = np.eye(3) + 2.0 * tensor(green, 2.0)
     log_j = 0.5 * np.log(np.linalg.det(c))
     rubber = 0.5 * m.mu * (np.trace(c, axis1=-2, axis2=-1) - 3.0) - m.mu * log_j + 0.5 * m.lam * log_j**2
     return rubber + 0.5 * np.einsum("...i,...ij,...j->...", green, m.fibre, green)
+
+
+def half_sphere(count: int) -> np.ndarray:
+    """``count`` unit vectors spread evenly over a half sphere (a Fibonacci lattice): the directions of
+    :func:`least_acoustic_eigenvalue` (``N`` and ``-N`` give one acoustic tensor)."""
+    k = np.arange(count) + 0.5
+    z = k / count  # 0..1: the upper half
+    phi = np.pi * (1.0 + np.sqrt(5.0)) * k
+    r = np.sqrt(1.0 - z**2)
+    return np.stack([r * np.cos(phi), r * np.sin(phi), z], axis=-1)
+
+
+def least_acoustic_eigenvalue(f: np.ndarray, m: PointMaterials, directions: np.ndarray) -> np.ndarray:
+    r"""Least eigenvalue (Pa) over ``directions`` of the acoustic tensor at deformation gradients ``f`` (..., 3, 3).
+
+    :math:`Q_{ik}(N) = A_{iJkL} N_J N_L` with the first elasticity tensor
+    :math:`A_{iJkL} = F_{iI} F_{kK} D_{IJKL} + \delta_{ik} S_{JL}` (Holzapfel 2000, sec. 6.9). The law
+    is strongly elliptic where it is positive for every ``N``: a negative value is a point that
+    can buckle at no length of its own (a cord ply compressed along its cords beyond its shear
+    stiffness: Rosen's micro-buckling), and a solution that depends on the mesh.
+    """
+    stress, d = stress_and_tangent(green_strain(f), m)
+    pair = np.zeros((3, 3), int)
+    for a, (i, j) in enumerate(VOIGT):
+        pair[i, j] = pair[j, i] = a
+    directions = np.asarray(directions, float)
+    d_full = d[..., pair[:, :, None, None], pair[None, None, :, :]]  # D_IJKL
+    d_nn = np.einsum("...IJKL,nJ,nL->...nIK", d_full, directions, directions)
+    s_nn = np.einsum("...JL,nJ,nL->...n", stress[..., pair], directions, directions)
+    q = np.einsum("...iI,...nIK,...kK->...nik", f, d_nn, f) + s_nn[..., None, None] * np.eye(3)
+    return np.linalg.eigvalsh(q)[..., 0].min(axis=-1)

@@ -27,7 +27,14 @@ import scipy.sparse as sp
 from ..cross_section.laminate import VOIGT, rotate
 from ..cross_section.spec import CrossSectionSpec
 from ..cross_section.waveguide import lagrange3
-from .material import PointMaterials, rubber_lame, stress_and_tangent
+from .material import (
+    PointMaterials,
+    green_strain,
+    half_sphere,
+    least_acoustic_eigenvalue,
+    rubber_lame,
+    stress_and_tangent,
+)
 from .mesh import SolidMesh
 
 #: ``PAIRS[a, j, k] = 1`` where the Voigt strain ``a`` holds ``F_ij dN/dX_k`` (shears: both orders).
@@ -178,12 +185,6 @@ def deformation_gradient(group: ElementGroup, u: np.ndarray) -> np.ndarray:
     return f
 
 
-def green_strain(f: np.ndarray) -> np.ndarray:
-    """Green-Lagrange strain, Voigt with engineering shears (..., 6), of deformation gradients (..., 3, 3)."""
-    c = np.matmul(np.swapaxes(f, -1, -2), f)
-    return np.stack([(c[..., i, j] - (i == j)) * (0.5 if i == j else 1.0) for i, j in VOIGT], axis=-1)
-
-
 def strain_operator(f: np.ndarray, grad: np.ndarray) -> np.ndarray:
     """``B`` (m, q, 6, 81) with :math:`\\delta E = B\\,\\delta u_e` (Voigt, engineering shears).
 
@@ -271,6 +272,14 @@ def internal_force(groups: list[ElementGroup], u: np.ndarray, n_dof: int) -> np.
     for group in groups:
         np.add.at(force, group.dofs, group_force_and_tangent(group, u, tangent=False)[0])
     return force
+
+
+def ellipticity(groups: list[ElementGroup], u: np.ndarray, directions: int = 200) -> list[np.ndarray]:
+    """Per group, the least acoustic eigenvalue (Pa, (m, q)) at displacements ``u`` over ``directions``
+    directions (:func:`~roadnoise_utils.tire.loaded.material.least_acoustic_eigenvalue`): negative where
+    the law has lost strong ellipticity."""
+    normals = half_sphere(directions)
+    return [least_acoustic_eigenvalue(deformation_gradient(g, u), g.materials, normals) for g in groups]
 
 
 def mass_matrix(groups: list[ElementGroup], n_dof: int) -> sp.csr_matrix:

@@ -183,7 +183,7 @@ def is_stable(tire: LoadedTire, state: StaticState) -> bool:
     """Whether ``state`` is a minimum of the potential, the rim and the contact nodes' heights held.
 
     Newton's method finds any stationary point; a saddle is an equilibrium the tire would leave
-    (e.g. the belt wrinkling in the footprint). The tangent of the free DOF is positive definite
+    (e.g. the cord plies compressed in the footprint buckling). The tangent of the free DOF is positive definite
     at a minimum: its Cholesky factor exists.
     """
     _, k = residual_and_tangent(tire, state.u, state.pressure)
@@ -389,9 +389,9 @@ def press_on_flat_road(
     if not state.stable:
         guards.warn(
             f"the loaded state at a lift of {lift * 1e3:.3g} mm ({state.road_force:.0f} N) is a saddle of the "
-            "potential, not a minimum: its tangent has a negative direction (e.g. the belt wrinkling in the "
-            "footprint between the nodes of a coarse mesh), so its stiffness and footprint are those of an "
-            "equilibrium the tire would leave; refine the mesh over the footprint or lower the load"
+            "potential, not a minimum: its tangent has a negative direction (e.g. the cord plies compressed in "
+            "the footprint buckling between the nodes), so its stiffness and footprint are those of an "
+            "equilibrium the tire would leave; lower the load"
         )
     return state
 

@@ -274,3 +274,28 @@ def test_no_deformation_escapes_the_stiffness_and_the_mass_refuses_a_reduced_int
     assert lowest > 0.99 * waveguide
     with pytest.raises(ValueError, match="3 Gauss points"):
         solid.mass_matrix(solid.element_groups(mesh, spec, arc_points=2), mesh.n_dof)
+
+
+def test_the_acoustic_tensor_s_least_eigenvalue_is_the_shear_modulus_and_rosen_s_limit():
+    """Unstrained isotropic rubber: mu over every direction (the shear wave). A fibre along x of
+    modulus E_f in rubber of shear modulus mu (lambda = 0), stretched ``s`` along it: along x the
+    transverse wave's modulus is mu + S_11 = mu + E_f (s^2 - 1) / 2, negative once the fibre's
+    compression exceeds mu (Rosen's micro-buckling of a composite)."""
+    rubber = material.PointMaterials(lam=np.array(3e6), mu=np.array(1e6), fibre=np.zeros((6, 6)))
+    least = material.least_acoustic_eigenvalue(np.eye(3), rubber, material.half_sphere(300))
+    assert abs(least / 1e6 - 1) < 1e-12
+    fibre = np.zeros((6, 6))
+    fibre[0, 0] = 1e9
+    ply = material.PointMaterials(lam=np.array(0.0), mu=np.array(1e6), fibre=fibre)
+    for stretch in (1.0, 0.9995, 0.998):
+        value = material.least_acoustic_eigenvalue(np.diag([stretch, 1.0, 1.0]), ply, np.array([[1.0, 0.0, 0.0]]))
+        assert abs(value - (1e6 + 1e9 * (stretch**2 - 1) / 2)) < 1e-6 * 1e6
+    directions = material.half_sphere(50)
+    np.testing.assert_allclose(np.linalg.norm(directions, axis=1), 1.0, rtol=1e-14)
+    assert np.all(directions[:, 2] > 0)  # one of each pair N, -N
+
+
+def test_the_tire_s_laws_are_strongly_elliptic_unstrained(small):
+    """At zero strain every layer's stiffness is positive definite, so every acoustic tensor is too."""
+    mesh, groups = swept(small, 6)
+    assert min(v.min() for v in solid.ellipticity(groups, np.zeros(mesh.n_dof), directions=60)) > 0.0
