@@ -179,6 +179,11 @@ def solve_tangent(matrix: sp.spmatrix, rhs: np.ndarray) -> np.ndarray:
         return spla.spsolve(sp.csc_matrix(matrix), rhs)
 
 
+def held_dof(tire: LoadedTire, contact: np.ndarray) -> np.ndarray:
+    """DOF held in a loaded state: every DOF of the rim's nodes, the vertical DOF of the ``contact`` nodes."""
+    return np.concatenate([tire.fixed, 3 * np.asarray(contact, int) + 2])
+
+
 def is_stable(tire: LoadedTire, state: StaticState) -> bool:
     """Whether ``state`` is a minimum of the potential, the rim and the contact nodes' heights held.
 
@@ -187,7 +192,7 @@ def is_stable(tire: LoadedTire, state: StaticState) -> bool:
     at a minimum: its Cholesky factor exists.
     """
     _, k = residual_and_tangent(tire, state.u, state.pressure)
-    free = np.setdiff1d(np.arange(tire.n_dof), np.concatenate([tire.fixed, 3 * state.contact + 2]))
+    free = np.setdiff1d(np.arange(tire.n_dof), held_dof(tire, state.contact))
     try:
         BandedCholesky(k[free][:, free])
     except np.linalg.LinAlgError:
@@ -331,7 +336,7 @@ class _RoadContact:
     def constraints(self) -> tuple[np.ndarray, np.ndarray]:
         """Held DOF (the rim's, the contact nodes' vertical) and their displacements (m)."""
         tire = self.tire
-        held = np.concatenate([tire.fixed, 3 * self.active + 2])
+        held = held_dof(tire, self.active)
         heights = self.road - tire.mesh.coordinates[self.active, 2]
         return held, np.concatenate([np.zeros(tire.fixed.size), heights])
 
@@ -381,7 +386,7 @@ def press_on_flat_road(
         u, step_history = newton(tire, u, p, *contact.constraints(), scale, update=contact.update)
         history.append(step_history)
         active = contact.active
-    held = np.concatenate([tire.fixed, 3 * active + 2])
+    held = held_dof(tire, active)
     state = StaticState(
         u=u, pressure=p, road_lift=lift, contact=active, reactions=_reactions(tire, u, p, held), history=history
     )
@@ -404,7 +409,7 @@ def vertical_stiffness(tire: LoadedTire, state: StaticState) -> float:
     """
     _, k = residual_and_tangent(tire, state.u, state.pressure)
     road = 3 * state.contact + 2
-    free = np.setdiff1d(np.arange(tire.n_dof), np.concatenate([tire.fixed, road]))
+    free = np.setdiff1d(np.arange(tire.n_dof), held_dof(tire, state.contact))
     moved = np.asarray(k[free][:, road].sum(axis=1)).ravel()
     du = solve_tangent(k[free][:, free], -moved)
     return float(k[road][:, road].sum() + np.asarray(k[road][:, free] @ du).sum())
