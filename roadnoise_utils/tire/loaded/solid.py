@@ -142,9 +142,13 @@ def element_groups(mesh: SolidMesh, spec: CrossSectionSpec, arc_points: int = AR
         theta = np.arctan2(position[..., 0], -position[..., 2])
         stiffness = rotate(np.repeat(pts.stiffness[sel], arc_points, axis=0)[None], _model_to_global(theta))
         layer = np.repeat(pts.layer[sel], arc_points)
-        materials = PointMaterials.from_stiffness(
-            stiffness, np.broadcast_to(lame[layer, 0], theta.shape), np.broadcast_to(lame[layer, 1], theta.shape)
-        )
+        try:
+            materials = PointMaterials.from_stiffness(
+                stiffness, np.broadcast_to(lame[layer, 0], theta.shape), np.broadcast_to(lame[layer, 1], theta.shape)
+            )
+        except ValueError as error:
+            names = ", ".join(sorted({pts.layers[i] for i in layer}))
+            raise ValueError(f"[layers] {names} (section element {e}): {error}") from error
         groups.append(
             ElementGroup(
                 elements=elements,

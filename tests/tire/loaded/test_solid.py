@@ -299,3 +299,11 @@ def test_the_tire_s_laws_are_strongly_elliptic_unstrained(small):
     """At zero strain every layer's stiffness is positive definite, so every acoustic tensor is too."""
     mesh, groups = swept(small, 6)
     assert min(v.min() for v in solid.ellipticity(groups, np.zeros(mesh.n_dof), directions=60)) > 0.0
+
+
+def test_a_rubber_stiffer_than_its_layer_is_refused_naming_the_layers(small, monkeypatch):
+    """A skim rubber whose shear modulus exceeds what its ply holds leaves no positive fibre remainder."""
+    spec, section = small
+    monkeypatch.setattr(solid, "rubber_lame", lambda layer: (0.0, 1e12))
+    with pytest.raises(ValueError, match=r"\[layers\] .*liner.*shear modulus exceeds"):
+        solid.element_groups(sweep(section, uniform(6)), spec)
