@@ -14,9 +14,10 @@ tends to zero.
 The waveguide tire linearises once more: about the round, unstressed tire, with the stress of its
 linear inflation (:func:`round_linearisation`, :func:`.solid.prestressed_tangent`). On the same
 section the solids then have its frequencies to the discretisation; the exact tangent at the
-inflated state differs from it by the nonlinear inflation (on the 165/65 R14 at 2.3 bar: the
-inflation's largest displacement 0.76 mm against the linear 0.96 mm, the n = 0 and 1 modes 3 %
-lower).
+inflated state differs from it by what that initial-stress linearisation leaves out (on the
+165/65 R14 at 2.3 bar: the inflation's largest displacement 0.76 mm against the linear 0.96 mm,
+the n = 0 and 1 modes 3 % lower). It is the waveguide's equivalent, not the consistent tangent
+about any inflated state.
 """
 
 from __future__ import annotations

@@ -255,9 +255,11 @@ def prestressed_tangent(groups: list[ElementGroup], u: np.ndarray, n_dof: int) -
     r"""Stiffness of the undeformed solids carrying the linear-elastic stress of the small displacement ``u`` (N/m).
 
     :math:`K = \int (B_0^T D_0 B_0 + G^T \hat\sigma G)\,dV_0` with :math:`\sigma = D_0 B_0 u`: the
-    linearisation of a pre-stressed structure about its unstressed geometry (the deformation's
-    own change of geometry and the strain's quadratic part left out), as the waveguide tire takes
-    its inflation. :func:`assemble` at the inflated state is the exact tangent instead.
+    initial-stress linearisation of a pre-stressed structure about its unstressed geometry, as the
+    waveguide tire takes its inflation. It is not the consistent first-order tangent: the
+    initial-displacement terms (``B`` at the displaced state) and the pressure stiffness's change
+    with the geometry, of the same order in ``u`` as the stress kept, are left out.
+    :func:`assemble` at the inflated state is the exact tangent instead.
     """
     blocks = []
     for group in groups:
