@@ -6,14 +6,13 @@ pressure's load stiffness, :func:`.statics.residual_and_tangent`) stays the tire
 however far the road presses. Condensed on the tread nodes near the road, its inverse is the
 vertical compliance the waveguide tire gives for its contact grid, and the same frictionless
 one-sided contact (:func:`roadnoise_utils.tire.active_set.active_set`) solves the flat road on
-both. The two tires then differ only by their discretisations, which is how the swept solids are
-checked against the waveguide; the nonlinear loaded state (:func:`.statics.press_on_flat_road`)
-differs from this one by the geometric nonlinearity alone, and tends to it as the road's lift
-tends to zero.
+both. The nonlinear loaded state (:func:`.statics.press_on_flat_road`) differs from this one by
+the loading's geometric nonlinearity alone, and tends to it as the road's lift tends to zero.
 
 The waveguide tire linearises once more: about the round, unstressed tire, with the stress of its
-linear inflation (:func:`round_linearisation`, :func:`.solid.prestressed_tangent`). On the same
-section the solids then have its frequencies to the discretisation; the exact tangent at the
+linear inflation (:func:`round_linearisation`, :func:`.solid.prestressed_tangent`). Linearised so,
+the solids differ from it only by their discretisations, which is how they are checked against
+it: on the same section they have its frequencies and its K_v. The exact tangent at the
 inflated state differs from it by what that initial-stress linearisation leaves out (on the
 165/65 R14 at 2.3 bar: the inflation's largest displacement 0.76 mm against the linear 0.96 mm,
 the n = 0 and 1 modes 3 % lower). It is the waveguide's equivalent, not the consistent tangent
