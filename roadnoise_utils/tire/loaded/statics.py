@@ -188,8 +188,8 @@ def is_stable(tire: LoadedTire, state: StaticState) -> bool:
     """Whether ``state`` is a minimum of the potential, the rim and the contact nodes' heights held.
 
     Newton's method finds any stationary point; a saddle is an equilibrium the tire would leave
-    (e.g. the cord plies compressed in the footprint buckling). The tangent of the free DOF is positive definite
-    at a minimum: its Cholesky factor exists.
+    (e.g. the cord plies compressed in the footprint buckling). The tangent of the free DOF is
+    positive definite at a minimum: its Cholesky factor exists.
     """
     _, k = residual_and_tangent(tire, state.u, state.pressure)
     free = np.setdiff1d(np.arange(tire.n_dof), held_dof(tire, state.contact))
@@ -363,8 +363,7 @@ def press_on_flat_road(
     ``start``: a loaded state of the same inflation to continue from (its lift and contact set)
     instead of the inflated tire.
     """
-    if not lift > 0.0:
-        raise ValueError(f"lift = {lift!r} m: give a positive road displacement")
+    lift = guards.real("lift", lift, 0.0, lo_open=True, unit="m")
     steps = guards.integer("steps", steps, 1)
     touch = float(tread_heights(tire, inflated.u).min())
     rim = float(tire.mesh.coordinates[tire.mesh.bead_nodes, 2].min()) - touch  # the rim's lowest point above the road

@@ -111,8 +111,9 @@ def test_the_tangent_vertical_stiffness_is_the_derivative_of_the_road_force(tire
 
 
 def test_a_road_that_does_not_rise_is_refused(tire, inflated):
-    with pytest.raises(ValueError, match="lift"):
-        statics.press_on_flat_road(tire, inflated, 0.0)
+    for lift in (0.0, -0.001, float("nan"), "0.005", True):
+        with pytest.raises(ValueError, match="lift"):
+            statics.press_on_flat_road(tire, inflated, lift)
 
 
 def test_the_loaded_state_does_not_depend_on_the_load_steps(tire, inflated, loaded):
