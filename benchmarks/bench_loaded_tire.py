@@ -33,13 +33,13 @@ import time
 import warnings
 
 import numpy as np
-import scipy.linalg as sla
 import scipy.sparse.linalg as spla
 
 import roadnoise_utils as ru
 from roadnoise_utils.guards import RoadnoiseWarning
 from roadnoise_utils.tire.banded import BandedCholesky
 from roadnoise_utils.tire.cross_section import static as section_static
+from roadnoise_utils.tire.cross_section.checks import harmonic_frequencies
 from roadnoise_utils.tire.cross_section.operators import harmonic_operators
 from roadnoise_utils.tire.loaded import linearised, solid, statics
 from roadnoise_utils.tire.loaded.mesh import graded_arcs
@@ -96,11 +96,7 @@ def compare_modes(spec, n_arcs: int, count: int = 40) -> None:
     free = np.setdiff1d(np.arange(tire.n_dof), tire.fixed)
     mass = solid.mass_matrix(tire.groups, tire.n_dof)[free][:, free].tocsc()
     ops = harmonic_operators(tire.mesh.section, spec.laws(), spec.operating.inflation_pressure)
-    reference = {}
-    for n in range(7):
-        k = ops.stiffness(n, storage_only=True).toarray()[np.ix_(ops.free, ops.free)]
-        m = ops.mass_matrix(n).toarray()[np.ix_(ops.free, ops.free)]
-        reference[n] = np.sqrt(sla.eigh(k, m, eigvals_only=True, subset_by_index=[0, 1])) / (2 * np.pi)
+    reference = {n: harmonic_frequencies(ops, n)[:2] for n in range(7)}
     inflated = statics.inflate(tire)
     tangents = {
         "round": linearised.round_linearisation(tire).tangent,

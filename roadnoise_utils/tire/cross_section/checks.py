@@ -42,7 +42,11 @@ def band(radius=0.3, width=0.1, thickness=0.002, modulus=2e9, density=1200.0, n_
     return structured_mesh(node_r, node_y, [[[ply]] for _ in range(n_el)])
 
 
-def _eig(ops, n, extra=None):
+def harmonic_frequencies(ops, n: int, extra=None) -> np.ndarray:
+    """Natural frequencies (Hz, ascending) of harmonic ``n`` of the rim-clamped tire at the static moduli.
+
+    ``extra``: a stiffness per radian added to the harmonic's (e.g. a foundation's springs).
+    """
     free = ops.free
     k = ops.stiffness(n, storage_only=True)
     if extra is not None:
@@ -82,7 +86,7 @@ def ring_check(
         density * width * thickness,
     )
     n = np.arange(1, 7)
-    ours = np.array([_eig(ops, k, springs)[0] for k in n])
+    ours = np.array([harmonic_frequencies(ops, k, springs)[0] for k in n])
     closed = ring_frequencies(n, ring)
     with np.errstate(divide="ignore", invalid="ignore"):  # a free ring's n = 1 is a rigid motion (0 Hz)
         error = np.where(closed > 0, 100 * (ours / closed - 1), np.nan)
