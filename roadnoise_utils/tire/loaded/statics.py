@@ -184,14 +184,15 @@ def held_dof(tire: LoadedTire, contact: np.ndarray) -> np.ndarray:
     return np.concatenate([tire.fixed, 3 * np.asarray(contact, int) + 2])
 
 
-def is_stable(tire: LoadedTire, state: StaticState) -> bool:
+def is_stable(tire: LoadedTire, state: StaticState, tangent: sp.spmatrix | None = None) -> bool:
     """Whether ``state`` is a minimum of the potential, the rim and the contact nodes' heights held.
 
     Newton's method finds any stationary point; a saddle is an equilibrium the tire would leave
     (e.g. the cord plies compressed in the footprint buckling). The tangent of the free DOF is
-    positive definite at a minimum: its Cholesky factor exists.
+    positive definite at a minimum: its Cholesky factor exists. ``tangent``: the tangent at
+    ``state`` if already assembled (the last Newton iteration's), else it is assembled here.
     """
-    _, k = residual_and_tangent(tire, state.u, state.pressure)
+    k = residual_and_tangent(tire, state.u, state.pressure)[1] if tangent is None else sp.csr_matrix(tangent)
     free = np.setdiff1d(np.arange(tire.n_dof), held_dof(tire, state.contact))
     try:
         BandedCholesky(k[free][:, free])
@@ -225,6 +226,8 @@ def newton(
     history : list of list of float
         The out-of-balance force of the free DOF relative to ``scale`` at each iteration, one list
         per held set (a new list when ``update`` changes it).
+    tangent : scipy.sparse.csr_matrix
+        The tangent at ``u`` (N/m), all DOF: the last iteration's.
     """
     u = u.copy()
     free = np.setdiff1d(np.arange(tire.n_dof), held)
@@ -249,7 +252,7 @@ def newton(
                 converged = tiny_step = False
                 history.append([])
         if converged and not moved.any():
-            return u, history
+            return u, history, k
         step = np.zeros(tire.n_dof)
         k_free = k[free]
         if moved.any():
@@ -309,7 +312,7 @@ def inflate(tire: LoadedTire, p: float | None = None, steps: int = 1) -> StaticS
     history = []
     for level in np.linspace(p / steps, p, steps):
         scale = np.linalg.norm(pressure.pressure_load(tire.mesh, tire.surface, u, level))
-        u, steps_history = newton(tire, u, level, tire.fixed, np.zeros(tire.fixed.size), scale)
+        u, steps_history, _ = newton(tire, u, level, tire.fixed, np.zeros(tire.fixed.size), scale)
         history.append(steps_history)
     return StaticState(u=u, pressure=p, reactions=_reactions(tire, u, p, tire.fixed), history=history)
 
@@ -382,14 +385,14 @@ def press_on_flat_road(
         active = np.union1d(active, tire.tread[tread_heights(tire, u) < road])
         contact = _RoadContact(tire, road, GAP_TOLERANCE * lift, active)
         scale = np.linalg.norm(pressure.pressure_load(tire.mesh, tire.surface, u, p))
-        u, step_history = newton(tire, u, p, *contact.constraints(), scale, update=contact.update)
+        u, step_history, tangent = newton(tire, u, p, *contact.constraints(), scale, update=contact.update)
         history.append(step_history)
         active = contact.active
     held = held_dof(tire, active)
     state = StaticState(
         u=u, pressure=p, road_lift=lift, contact=active, reactions=_reactions(tire, u, p, held), history=history
     )
-    state.stable = is_stable(tire, state)
+    state.stable = is_stable(tire, state, tangent)
     if not state.stable:
         guards.warn(
             f"the loaded state at a lift of {lift * 1e3:.3g} mm ({state.road_force:.0f} N) is a saddle of the "
