@@ -136,7 +136,7 @@ def structured_mesh(node_r: np.ndarray, node_y: np.ndarray, stacks: list[list[li
     element = np.array([rec[0] for rec in records])
     xi = np.array([rec[1] for rec in records])
     eta = np.array([rec[2] for rec in records])
-    tangent_r, tangent_y = _meridian_tangent(node_r.ravel(), node_y.ravel(), elements[element], xi, eta)
+    tangent_r, tangent_y = meridian_tangent(node_r.ravel(), node_y.ravel(), elements[element], xi, eta)
     stiffness = np.empty((element.size, 6, 6))
     for q, rec in enumerate(records):
         stiffness[q] = laminate.to_model_axes(rec[4].stiffness, tangent_r[q : q + 1], tangent_y[q : q + 1])[0]
@@ -162,8 +162,14 @@ def structured_mesh(node_r: np.ndarray, node_y: np.ndarray, stacks: list[list[li
     )
 
 
-def _meridian_tangent(r, y, elem_nodes, xi, eta):
-    """Unit tangent along the element's ``xi`` direction (the meridian) at each point."""
+def meridian_tangent(
+    r: np.ndarray, y: np.ndarray, elem_nodes: np.ndarray, xi: np.ndarray, eta: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """Unit tangent ``(s_r, s_y)`` along the element's ``xi`` direction (the meridian) at each point.
+
+    ``r, y`` are the section's node coordinates (m), ``elem_nodes`` (q, 9) each point's element
+    nodes, ``xi, eta`` (q,) its parent coordinates.
+    """
     ni, di = lagrange3(xi)
     nj, _ = lagrange3(eta)
     d_xi = (di[:, None, :] * nj[None, :, :]).reshape(9, -1).T

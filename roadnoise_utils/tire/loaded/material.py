@@ -16,6 +16,27 @@ the tangent is exactly ``C``, so the linearised tire about the round, unloaded s
 cross-section tire; the cords stretch little, so their quadratic energy is where it is accurate,
 while the rubber takes the large strains.
 
+Cords in compression. A quadratic fibre energy carries compression as stiffly as tension, and a
+ply compressed along its cords by more than its shear stiffness loses strong ellipticity (Rosen's
+micro-buckling: the compressive strength of a fibre composite is its shear modulus, Rosen, *Fibre
+Composite Materials*, ASM 1965, ch. 3): the tread's belts and carcass under the footprint edge
+reach that at a few millimetres of deflection, where the discrete tangent then turns indefinite
+at loads that depend on the mesh. Tire cords buckle in compression (textile cords at once, steel
+cords by their strands), and netting analyses of the tire let them carry tension only (Purdy,
+*Mathematics Underlying the Design of Pneumatic Tyres*, 1963). So each of a ply's two cord families (``+beta`` and ``-beta``, the balanced
+ply's halves) carries, along its own Green strain :math:`e = a\\cdot E a`, the quadratic energy in
+tension and a stress that levels off in compression,
+
+.. math:: \\sigma(e) = k\\,e \\;(e \\ge 0), \\qquad \\sigma(e) = k\\,e_c \\tanh(e / e_c) \\;(e < 0),
+          \\qquad k\\,e_c = \\sigma_c = \\tfrac12 \\mu,
+
+at most half the skim rubber's shear modulus per family (:data:`CORD_BUCKLING_FRACTION`), so that
+both families together stay below the ply's shear stiffness and the compressed ply stays strongly
+elliptic. ``k`` is nearly all the stiffness the ply has along its cords beyond its rubber
+(:data:`CORD_SHARE`; for the 165/65 R14 file's plies within 0.2 % of the rule of mixtures'
+:math:`V_f E_{cord} / 2` per family): buckled cords leave the ply its skim's stiffness. The law is :math:`C^2` in the stress at ``e = 0``: at
+zero and tensile cord strain it is the quadratic law above, its tangent exactly ``C``.
+
 Voigt order ``[11, 22, 33, 23, 13, 12]`` with engineering shear strains, as the laminate.
 """
 
@@ -30,6 +51,17 @@ from ..cross_section.spec import CordLayer, RubberLayer, TreadLayer
 
 #: Poisson ratio of the skim rubber of a cord ply (the laminate's own Halpin-Tsai assumption).
 MATRIX_POISSON = 0.49
+
+#: Compressive stress a cord family carries at most, as a fraction of its skim rubber's shear
+#: modulus: two families at one half stay below the ply's shear stiffness (Rosen's limit, whose
+#: in-plane shear modulus ``G_LT`` exceeds the skim's), so the compressed ply stays elliptic.
+CORD_BUCKLING_FRACTION = 0.5
+
+#: Share of the largest stiffness along the cords that a cord family gives up when it buckles: the
+#: largest leaves the remainder singular, and the rubber's ``lambda`` would have to drop to zero;
+#: 0.999 keeps it within 1 % of its value without cords' compression (a 165/65 R14 belt keeps
+#: 0.1 % of its cords' stiffness when buckled, 15 MPa, the order of its skim rubber's 8 MPa).
+CORD_SHARE = 0.999
 
 
 def rubber_lame(layer: RubberLayer | CordLayer | TreadLayer) -> tuple[float, float]:
@@ -52,7 +84,7 @@ def rubber_lame(layer: RubberLayer | CordLayer | TreadLayer) -> tuple[float, flo
 
 @dataclass(frozen=True, eq=False)
 class PointMaterials:
-    """The hyperelastic law at a set of points (arrays over any leading shape ``...``).
+    r"""The hyperelastic law at a set of points (arrays over any leading shape ``...``).
 
     Attributes
     ----------
@@ -60,14 +92,30 @@ class PointMaterials:
         Lamé constants of the neo-Hookean rubber (Pa).
     fibre : ndarray (..., 6, 6)
         The Saint Venant-Kirchhoff remainder ``C - C_rubber`` in the global axes (Pa).
+
+    cords : ndarray (..., 2, 6) or None
+        Voigt vectors :math:`a \otimes a` of the two cord families' reference directions (shears
+        ``a_i a_j``): the cord strain is ``cords @ E``. None: no cords.
+    cord_stiffness, cord_buckling : ndarray (...) or None
+        Each family's stiffness ``k`` along its cords and its compressive stress limit
+        :math:`\sigma_c` (Pa); zero stiffness where a point has no cords.
     """
 
     lam: np.ndarray
     mu: np.ndarray
     fibre: np.ndarray
+    cords: np.ndarray | None = None
+    cord_stiffness: np.ndarray | None = None
+    cord_buckling: np.ndarray | None = None
 
     @classmethod
-    def from_stiffness(cls, stiffness: np.ndarray, lam: np.ndarray, mu: np.ndarray) -> PointMaterials:
+    def from_stiffness(
+        cls,
+        stiffness: np.ndarray,
+        lam: np.ndarray,
+        mu: np.ndarray,
+        cords: np.ndarray | None = None,
+    ) -> PointMaterials:
         r"""Split the small-strain ``stiffness`` (..., 6, 6) into the rubber of ``lam, mu`` and the rest.
 
         The remainder must be positive semi-definite: a Saint Venant-Kirchhoff energy with a negative
@@ -77,11 +125,75 @@ class PointMaterials:
         to the largest value that keeps it so, :math:`\lambda = 1 / (m^T A^{+} m)` with
         :math:`A = C - 2\mu I` and :math:`m = [1, 1, 1, 0, 0, 0]`; the sum, and so the small-strain
         stiffness, is unchanged.
+
+        ``cords`` (..., 2, 3): the unit reference directions of each point's two cord families
+        (equal for a radial ply; zero vectors where a point has none). Each family gets the
+        compression law of the module notes, with ``k`` the share :data:`CORD_SHARE` of the largest
+        stiffness along the cords that the layer holds beyond its rubber's shear (so that fully
+        buckled cords leave a semi-definite remainder), and ``lam`` is lowered for that too.
         """
         lam, mu = np.asarray(lam, float), np.asarray(mu, float)
-        lam = np.minimum(lam, _largest_lambda(stiffness, mu))
-        rubber = _isotropic(lam, mu, stiffness.shape)
-        return cls(lam=lam, mu=mu, fibre=stiffness - rubber)
+        if cords is None:
+            lam = np.minimum(lam, _largest_lambda(stiffness, mu))
+            return cls(lam=lam, mu=mu, fibre=stiffness - _isotropic(lam, mu, stiffness.shape))
+        vectors = cord_vectors(cords)
+        shear_part = stiffness - _isotropic(np.zeros_like(mu), mu, stiffness.shape)
+        k = CORD_SHARE * _largest_cord_stiffness(shear_part, vectors)
+        buckled = stiffness - np.einsum("...,...fi,...fj->...ij", k, vectors, vectors)
+        lam = np.minimum(lam, _largest_lambda(buckled, mu))
+        return cls(
+            lam=lam,
+            mu=mu,
+            fibre=stiffness - _isotropic(lam, mu, stiffness.shape),
+            cords=vectors,
+            cord_stiffness=k,
+            cord_buckling=np.where(k > 0.0, CORD_BUCKLING_FRACTION * mu, 0.0),
+        )
+
+
+def cord_vectors(directions: np.ndarray) -> np.ndarray:
+    r"""Voigt vectors (..., 6) of :math:`a \otimes a` for directions (..., 3): ``[a1^2, a2^2, a3^2, a2 a3, a1 a3, a1 a2]``.
+
+    With engineering shear strains, the strain along ``a`` is the dot product with ``E`` (Voigt).
+    """
+    a = np.asarray(directions, float)
+    return np.stack([a[..., i] * a[..., j] for i, j in VOIGT], axis=-1)
+
+
+def _largest_cord_stiffness(stiffness: np.ndarray, vectors: np.ndarray) -> np.ndarray:
+    """The largest ``k`` (Pa) with ``stiffness - k (v_1 v_1^T + v_2 v_2^T)`` positive semi-definite.
+
+    ``1 / lambda_max(V^T stiffness^+ V)`` with ``V = [v_1, v_2]`` (the cords' Voigt vectors). Zero
+    where the vectors are zero (no cords) or leave the stiffness's range (nothing to take out).
+    """
+    values, basis = np.linalg.eigh(stiffness)
+    floor = 1e-9 * np.maximum(np.abs(values).max(axis=-1, keepdims=True), 1e-300)
+    kept = values > floor
+    inverse = np.where(kept, 1.0 / np.where(kept, values, 1.0), 0.0)
+    along = np.einsum("...ji,...fj->...if", basis, vectors)  # (..., eigenvector, family)
+    outside = np.einsum("...if,...i->...", along**2, np.where(kept, 0.0, 1.0)) > 1e-12
+    gram = np.einsum("...if,...i,...ig->...fg", along, inverse, along)
+    largest = np.linalg.eigvalsh(gram)[..., -1]
+    has_cords = (largest > 0.0) & ~outside
+    return np.where(has_cords, 1.0 / np.where(has_cords, largest, 1.0), 0.0)
+
+
+def _cord_law(strain: np.ndarray, stiffness: np.ndarray, buckling: np.ndarray) -> tuple[np.ndarray, ...]:
+    r"""Each family's energy, stress and tangent (Pa) less the quadratic ``k e^2 / 2``: zero in tension.
+
+    In compression :math:`\sigma = k e_c \tanh(e / e_c)` with :math:`e_c = \sigma_c / k`, whose
+    energy is :math:`k e_c^2 \ln\cosh(e / e_c)`.
+    """
+    limit = np.where(stiffness > 0.0, buckling / np.where(stiffness > 0.0, stiffness, 1.0), 1.0)
+    x = np.minimum(strain, 0.0) / limit
+    tanh = np.tanh(x)
+    log_cosh = -x + np.log1p(np.exp(2.0 * x)) - np.log(2.0)  # x <= 0: no overflow
+    k = stiffness
+    e = np.minimum(strain, 0.0)
+    energy = k * (limit**2 * log_cosh - 0.5 * e**2)
+    stress = k * (limit * tanh - e)
+    tangent = k * ((1.0 - tanh**2) - 1.0)
+    return energy, stress, tangent
 
 
 def _isotropic(lam: np.ndarray, mu: np.ndarray, shape: tuple) -> np.ndarray:
@@ -166,6 +278,12 @@ def stress_and_tangent(green: np.ndarray, m: PointMaterials) -> tuple[np.ndarray
         + factor * (inv_ik * inv_jl + inv_il * inv_jk)
         + m.fibre
     )
+    if m.cords is not None:
+        _, cord_stress, cord_tangent = _cord_law(
+            np.einsum("...fi,...i->...f", m.cords, green), m.cord_stiffness[..., None], m.cord_buckling[..., None]
+        )
+        stress = stress + np.einsum("...f,...fi->...i", cord_stress, m.cords)
+        tangent = tangent + np.einsum("...f,...fi,...fj->...ij", cord_tangent, m.cords, m.cords)
     return stress, tangent
 
 
@@ -180,7 +298,13 @@ def energy(green: np.ndarray, m: PointMaterials) -> np.ndarray:
     c = np.eye(3) + 2.0 * tensor(green, 2.0)
     log_j = 0.5 * np.log(np.linalg.det(c))
     rubber = 0.5 * m.mu * (np.trace(c, axis1=-2, axis2=-1) - 3.0) - m.mu * log_j + 0.5 * m.lam * log_j**2
-    return rubber + 0.5 * np.einsum("...i,...ij,...j->...", green, m.fibre, green)
+    fibre = 0.5 * np.einsum("...i,...ij,...j->...", green, m.fibre, green)
+    if m.cords is not None:
+        cord_energy, _, _ = _cord_law(
+            np.einsum("...fi,...i->...f", m.cords, green), m.cord_stiffness[..., None], m.cord_buckling[..., None]
+        )
+        fibre = fibre + cord_energy.sum(axis=-1)
+    return rubber + fibre
 
 
 def half_sphere(count: int) -> np.ndarray:

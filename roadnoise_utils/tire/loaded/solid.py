@@ -25,6 +25,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from ..cross_section.laminate import VOIGT, rotate
+from ..cross_section.mesh import SectionMesh, meridian_tangent
 from ..cross_section.spec import CrossSectionSpec
 from ..cross_section.waveguide import lagrange3
 from .material import (
@@ -122,6 +123,7 @@ def element_groups(mesh: SolidMesh, spec: CrossSectionSpec, arc_points: int = AR
         raise ValueError(f"arc_points = {arc_points!r}: give 2 (the stiffness) or 3 (the mass)")
     pts = mesh.section.points
     lame = np.array([rubber_lame(spec.layers[name]) for name in pts.layers])  # (n_layers, 2)
+    section_cords = cord_directions(mesh.section, spec)
     zeta, zeta_weight = np.polynomial.legendre.leggauss(arc_points)
     groups = []
     for e in range(mesh.section.elements.shape[0]):
@@ -142,9 +144,13 @@ def element_groups(mesh: SolidMesh, spec: CrossSectionSpec, arc_points: int = AR
         theta = np.arctan2(position[..., 0], -position[..., 2])
         stiffness = rotate(np.repeat(pts.stiffness[sel], arc_points, axis=0)[None], _model_to_global(theta))
         layer = np.repeat(pts.layer[sel], arc_points)
+        cords = np.einsum("mqij,qfj->mqfi", _model_to_global(theta), np.repeat(section_cords[sel], arc_points, axis=0))
         try:
             materials = PointMaterials.from_stiffness(
-                stiffness, np.broadcast_to(lame[layer, 0], theta.shape), np.broadcast_to(lame[layer, 1], theta.shape)
+                stiffness,
+                np.broadcast_to(lame[layer, 0], theta.shape),
+                np.broadcast_to(lame[layer, 1], theta.shape),
+                cords,
             )
         except ValueError as error:
             names = ", ".join(sorted({pts.layers[i] for i in layer}))
@@ -163,6 +169,24 @@ def element_groups(mesh: SolidMesh, spec: CrossSectionSpec, arc_points: int = AR
             )
         )
     return groups
+
+
+def cord_directions(section: SectionMesh, spec: CrossSectionSpec) -> np.ndarray:
+    r"""Unit directions (q, 2, 3) of the two cord families at the section's points, in its axes ``(r, theta, y)``.
+
+    A ply at ``beta`` from the circumferential direction has cords along
+    :math:`\cos\beta\, e_\theta \pm \sin\beta\, s` (``s`` the meridian tangent, as the laminate
+    rotates its stiffness); zero vectors at points outside cord plies.
+    """
+    pts = section.points
+    s_r, s_y = meridian_tangent(section.r, section.y, section.elements[pts.element], pts.xi, pts.eta)
+    angle = np.array([np.radians(getattr(spec.layers[name], "cord_angle", np.nan)) for name in pts.layers])[pts.layer]
+    has_cords = np.isfinite(angle)
+    cos, sin = np.where(has_cords, np.cos(angle), 0.0), np.where(has_cords, np.sin(angle), 0.0)
+    out = np.zeros((pts.element.size, 2, 3))
+    for family, sign in enumerate((1.0, -1.0)):
+        out[:, family] = np.stack([sign * sin * s_r, cos, sign * sin * s_y], axis=-1)
+    return out
 
 
 def _model_to_global(theta: np.ndarray) -> np.ndarray:

@@ -37,15 +37,23 @@ def test_the_compliance_is_symmetric_positive_and_the_tangent_s_inverse(tire, in
 
 
 def test_the_nonlinear_state_tends_to_the_linearised_one_at_first_order_in_the_lift(tire, inflated, compliance):
-    """F_nonlinear / F_linearised - 1 = a h + O(h^2): zero at zero lift, doubled with the lift."""
+    """F_nonlinear / F_linearised - 1 = a h + b h^2 + O(h^3): zero at zero lift, with one slope ``a``.
+
+    Richardson's extrapolation from the lifts (h, 2h) and from (2h, 4h), ``2 x(h) / h - x(2h) / 2h``,
+    gives ``a`` to O(h^2) from both. The cords compressed at the inflated state (under the belts and
+    at their edges) bend the curve within strains of their buckling strain, ~1e-4, so the lifts
+    are small: 12.5-50 um."""
     excess = []
-    for lift in (5e-5, 1e-4, 2e-4):
+    lifts = (1.25e-5, 2.5e-5, 5e-5)
+    for lift in lifts:
         linear = linearised.flat_road_at_lift(compliance, lift)
         loaded = statics.press_on_flat_road(tire, inflated, lift, steps=1)
         assert np.array_equal(np.sort(loaded.contact), np.sort(linear.contact))
         excess.append(loaded.road_force / linear.load - 1.0)
     assert abs(excess[0]) < 1e-3
-    assert abs(excess[1] / excess[0] - 2.0) < 0.02 and abs(excess[2] / excess[1] - 2.0) < 0.02
+    slope = [e / h for e, h in zip(excess, lifts)]
+    from_small, from_large = 2 * slope[0] - slope[1], 2 * slope[1] - slope[2]
+    assert abs(from_large / from_small - 1.0) < 0.01
 
 
 def test_held_at_a_load_and_at_its_lift_the_linearised_road_is_one_solution(compliance):

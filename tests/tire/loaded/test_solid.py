@@ -295,6 +295,80 @@ def test_the_acoustic_tensor_s_least_eigenvalue_is_the_shear_modulus_and_rosen_s
     assert np.all(directions[:, 2] > 0)  # one of each pair N, -N
 
 
+def _ply_along_x(k_cords: float = 1e9, mu: float = 1e6) -> tuple[np.ndarray, np.ndarray]:
+    """A layer of neo-Hookean rubber (lambda 3 mu) with cords of stiffness ``k_cords`` along x and a shear
+    modulus along them twice the rubber's (a ply's G_LT: 2.1 mu in the file's carcass, 1.5 mu in its
+    belts): its small-strain stiffness and cord directions (both families along x, a radial ply's)."""
+    stiffness = np.zeros((6, 6))
+    stiffness[:3, :3] = 3 * mu
+    stiffness[np.arange(6), np.arange(6)] += np.array([2, 2, 2, 1, 2, 2]) * mu
+    stiffness[0, 0] += k_cords
+    return stiffness, np.array([[1.0, 0.0, 0.0], [1.0, 0.0, 0.0]])
+
+
+def test_cords_carry_compression_up_to_their_buckling_stress_and_the_ply_stays_elliptic():
+    """Closed forms on a ply with cords along x. In tension, the quadratic law exactly; in
+    compression the cords' stress levels off at sigma_c = mu / 2 per family, so where the quadratic
+    law loses strong ellipticity (its axial stress beyond the ply's shear modulus along the cords:
+    Rosen), the ply keeps it: that shear modulus less the cords' limited stress and the rubber's own."""
+    stiffness, cords = _ply_along_x()
+    quadratic = material.PointMaterials.from_stiffness(stiffness, np.array(3e6), np.array(1e6))
+    ply = material.PointMaterials.from_stiffness(stiffness, np.array(3e6), np.array(1e6), cords)
+    assert abs(2 * ply.cord_stiffness / 1e9 - material.CORD_SHARE) < 1e-9  # the two families share it
+    np.testing.assert_allclose(ply.cord_buckling, material.CORD_BUCKLING_FRACTION * 1e6)
+    stretched = material.green_strain(np.diag([1.01, 1.0, 1.0]))
+    np.testing.assert_allclose(
+        material.stress_and_tangent(stretched, ply)[0], material.stress_and_tangent(stretched, quadratic)[0], rtol=1e-12
+    )
+    squeezed = np.diag([0.95, 1.0, 1.0])
+    rubber_only = material.PointMaterials(lam=ply.lam, mu=ply.mu, fibre=ply.fibre - 1e9 * np.outer(*[np.eye(6)[0]] * 2))
+    cord_stress = (
+        material.stress_and_tangent(material.green_strain(squeezed), ply)[0][0]
+        - (material.stress_and_tangent(material.green_strain(squeezed), rubber_only)[0][0])
+    )
+    strain = (0.95**2 - 1) / 2
+    residual = (1 - material.CORD_SHARE) * 1e9 * strain  # what the buckled cords keep, quadratic
+    assert abs(cord_stress - residual - (-2 * material.CORD_BUCKLING_FRACTION * 1e6)) < 1e-9 * 1e6
+    along_x = np.array([[1.0, 0.0, 0.0]])
+    assert material.least_acoustic_eigenvalue(squeezed, quadratic, along_x) < -1e7  # Rosen: buckled
+    assert material.least_acoustic_eigenvalue(squeezed, ply, material.half_sphere(200)) > 0.0
+
+
+def test_the_cords_stiffness_is_the_rule_of_mixtures_and_its_compression_law_is_consistent(small):
+    """Each family's ``k`` of the file's cord plies is V_f E_cord / 2 (the laminate's rule of mixtures
+    for E_L) to 0.3 %, computed from the layer's stiffness alone; and in compression the energy's
+    gradient is the stress and the stress's the tangent (central differences)."""
+    spec, section = small
+    mesh, groups = swept(small, 6)
+    pts = section.points
+    for e, group in enumerate(groups):
+        layer = np.repeat(pts.layer[pts.element == e], group.arc_points)
+        for index in np.unique(layer):
+            ply = spec.layers[pts.layers[index]]
+            k = group.materials.cord_stiffness[:, layer == index]
+            if isinstance(ply, CordLayer):
+                np.testing.assert_allclose(k, ply.cord_volume_fraction * ply.cord_modulus / 2, rtol=3e-3)
+            else:
+                assert np.all(k == 0.0)
+    stiffness, cords = _ply_along_x()
+    ply = material.PointMaterials.from_stiffness(stiffness, np.array(3e6), np.array(1e6), cords)
+    rng = np.random.default_rng(5)
+    for strain in [
+        np.array([-4e-4, 1e-3, 0.0, 2e-4, 0.0, -1e-4]),
+        2e-3 * rng.standard_normal(6) - [3e-3, 0, 0, 0, 0, 0],
+    ]:
+        stress, tangent = material.stress_and_tangent(strain, ply)
+        h = 1e-8
+        for i in range(6):
+            step = np.eye(6)[i] * h
+            energy = (material.energy(strain + step, ply) - material.energy(strain - step, ply)) / (2 * h)
+            assert abs(energy - stress[i]) < 1e-5 * np.abs(stress).max()
+            column = (
+                material.stress_and_tangent(strain + step, ply)[0] - material.stress_and_tangent(strain - step, ply)[0]
+            ) / (2 * h)
+            np.testing.assert_allclose(column, tangent[:, i], rtol=0, atol=1e-5 * np.abs(tangent).max())
+
+
 def test_the_tire_s_laws_are_strongly_elliptic_unstrained(small):
     """At zero strain every layer's stiffness is positive definite, so every acoustic tensor is too."""
     mesh, groups = swept(small, 6)
