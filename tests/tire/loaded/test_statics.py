@@ -78,11 +78,6 @@ def test_a_non_positive_pressure_is_refused(tire):
         statics.inflate(tire, 0.0)
 
 
-@pytest.fixture(scope="module")
-def loaded(tire, inflated):
-    return statics.press_on_flat_road(tire, inflated, 0.005, steps=2)
-
-
 def test_pressed_on_the_flat_road_the_contact_is_one_sided_symmetric_and_balanced(tire, inflated, loaded):
     assert loaded.road_force > 0.0
     contact = 3 * loaded.contact + 2

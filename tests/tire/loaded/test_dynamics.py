@@ -1,0 +1,72 @@
+"""The loaded tire's dynamics about its static state, on the small test tire pressed 5 mm into the road.
+
+Checked by a second method each: the stiffness parts sum to the static tangent; at rest the
+footprint transfer is the static vertical stiffness of the condensed tangent; the footprint's
+fore-aft and left-right symmetry holds in every node's transfer; the reduced solve equals the
+direct one over the band.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from roadnoise_utils.tire.loaded import dynamics, statics
+
+FREQS = np.array([0.0, 100.0, 250.0, 400.0])
+
+
+@pytest.fixture(scope="module")
+def linearised(tire, loaded):
+    return dynamics.linearise(tire, loaded)
+
+
+@pytest.fixture(scope="module")
+def direct(linearised):
+    return dynamics.footprint_frf_direct(linearised, FREQS)
+
+
+def test_the_stiffness_parts_sum_to_the_static_tangent(tire, loaded, linearised):
+    _, tangent = statics.residual_and_tangent(tire, loaded.u, loaded.pressure)
+    total = sum(linearised.compounds.values()) + linearised.pneumatic
+    assert abs(total - tangent).max() < 1e-12 * abs(tangent).max()
+    assert set(linearised.compounds) == set(tire.mesh.section.points.compounds)
+    assert all(abs(part - part.T).max() < 1e-9 * abs(tangent).max() for part in linearised.compounds.values())
+
+
+def test_at_rest_the_footprint_transfer_is_the_static_vertical_stiffness(tire, loaded, direct):
+    """H_tot(0) = K_v and G_H(0) = -K_v, K_v from the condensed static tangent (every ratio is 1 at rest)."""
+    k_v = statics.vertical_stiffness(tire, loaded)
+    assert abs(direct.H_tot[0] / k_v - 1) < 1e-9 and abs(direct.G_H[0] / k_v + 1) < 1e-9
+    assert np.all(np.abs(direct.hub[0].imag) < 1e-9 * k_v)
+
+
+def test_mirrored_contact_nodes_transfer_the_same_force(tire, loaded, direct):
+    """The tire and its footprint are symmetric fore-aft and left-right: mirrored nodes are equivalent."""
+    x, y = (tire.mesh.coordinates[loaded.contact, i] for i in (0, 1))
+    scale = np.abs(direct.hub).max()
+    for node in range(x.size):
+        for mirror_x, mirror_y in ((-x[node], y[node]), (x[node], -y[node])):
+            (mirror,) = np.nonzero((np.abs(x - mirror_x) < 1e-9) & (np.abs(y - mirror_y) < 1e-9))[0]
+            np.testing.assert_allclose(direct.hub[:, mirror], direct.hub[:, node], rtol=0, atol=1e-8 * scale)
+    assert np.ptp(np.abs(direct.hub[1])) > 1e-3 * scale  # the nodes differ: the check is not vacuous
+
+
+def test_the_reduced_solve_is_the_direct_one_over_the_band(linearised, direct):
+    """Craig-Bampton with the modes at rest and at the band's storage moduli, and the shapes'
+    corrections: within 1e-3 of the direct solve, relative to the largest transfer."""
+    reduced = dynamics.reduce(linearised, float(FREQS.max()))
+    frf = dynamics.footprint_frf(linearised, FREQS, reduced)
+    assert np.abs(frf.hub - direct.hub).max() < 1e-3 * np.abs(direct.hub).max()
+    assert np.abs(frf.G_H - direct.G_H).max() < 1e-3 * np.abs(direct.G_H).max()
+    assert abs(frf.H_tot[0] / direct.H_tot[0] - 1) < 1e-9  # the static shapes are in the basis: exact at rest
+
+
+def test_bad_input_is_refused_naming_it(tire, inflated, linearised):
+    with pytest.raises(ValueError, match="touches no road"):
+        dynamics.linearise(tire, inflated)
+    for freqs in ([], [10.0, 5.0], [-1.0], [np.nan], "abc"):
+        with pytest.raises(ValueError, match="freqs"):
+            dynamics.footprint_frf_direct(linearised, freqs)
+    with pytest.raises(ValueError, match="f_max"):
+        dynamics.reduce(linearised, 0.0)
