@@ -5,6 +5,7 @@ Run on demand (never as a timed test; the nonlinear loading takes minutes)::
     python benchmarks/bench_loaded_tire.py                      # 20 mm arcs, loaded to the file's load
     python benchmarks/bench_loaded_tire.py --arcs 0.02 0.01     # two footprint arc lengths
     python benchmarks/bench_loaded_tire.py --no-nonlinear       # the linearised comparison alone
+    python benchmarks/bench_loaded_tire.py --step 0.002         # road steps of 2 mm
 
 Both tires discretise the 165/65 R14 file's section at ``--crown`` and ``--sidewall`` elements;
 the swept solids take arcs of ``--arcs`` (m) over the footprint sector (+-0.28 rad), growing to
@@ -22,6 +23,12 @@ the swept solids take arcs of ``--arcs`` (m) over the footprint sector (+-0.28 r
    :func:`roadnoise_utils.tire.loaded.solid.ellipticity`), and whether the state is a minimum of
    the potential or a saddle (:func:`roadnoise_utils.tire.loaded.statics.is_stable`).
 
+4. the dynamics about the loaded state at the file's load (``--no-dynamics`` skips it): the
+   linearisation, the reduced basis and the footprint FRFs 0-400 Hz every 1 Hz (times, modes),
+   beside the waveguide tire's FRFs at the same load: H_tot at rest and its first peaks, G_H's
+   first peaks, and the share of the static stiffness within 15 mm of the footprint's ends (the
+   waveguide's: its end rows of tasselli).
+
 ``--modes N`` first compares the inflated, unloaded modes n = 0..6 on N uniform arcs with the
 waveguide's: each solid mode's harmonic is the one that carries most of its displacement.
 """
@@ -36,13 +43,15 @@ import numpy as np
 import scipy.sparse.linalg as spla
 
 import roadnoise_utils as ru
+from roadnoise_utils.experiments.cleat import row_influence
 from roadnoise_utils.guards import RoadnoiseWarning
 from roadnoise_utils.tire.banded import BandedCholesky
 from roadnoise_utils.tire.cross_section import static as section_static
 from roadnoise_utils.tire.cross_section.checks import harmonic_frequencies
 from roadnoise_utils.tire.cross_section.operators import harmonic_operators
-from roadnoise_utils.tire.loaded import linearised, solid, statics
+from roadnoise_utils.tire.loaded import dynamics, linearised, solid, statics
 from roadnoise_utils.tire.loaded.mesh import graded_arcs
+from roadnoise_utils.tire.model import tire_model
 
 LOADS = (1000.0, 2000.0, 3000.0, 4512.0)
 
@@ -127,7 +136,7 @@ def compare_modes(spec, n_arcs: int, count: int = 40) -> None:
             print(f"  {n}  {j} | {f_ref:9.2f} | {cells[0]:20s} | {cells[1]}")
 
 
-def load_nonlinear(tire, inflated, compliance, load: float, step: float) -> None:
+def load_nonlinear(tire, inflated, compliance, load: float, step: float) -> statics.StaticState:
     print(
         "  lift mm | force N (linearised) | K_v N/mm | footprint mm | s | least acoustic eigenvalue MPa | minimum of the potential"
     )
@@ -149,6 +158,52 @@ def load_nonlinear(tire, inflated, compliance, load: float, step: float) -> None
             flush=True,
         )
     print(f"  loaded to {state.road_force:.0f} N in {time.perf_counter() - t_total:.0f} s")
+    lift += (load - state.road_force) / statics.vertical_stiffness(tire, state)  # one step back to the load
+    state = statics.press_on_flat_road(tire, inflated, lift, steps=1, start=state)
+    print(f"  at the load: {state.road_force:.0f} N at {lift * 1e3:.2f} mm, a minimum: {state.stable}")
+    return state
+
+
+def peaks(values: np.ndarray, freqs: np.ndarray, count: int = 4) -> str:
+    """The first ``count`` local maxima of ``|values|`` above 10 Hz (below, the laws' stiffening alone): frequency
+    (Hz) and magnitude (N/mm)."""
+    magnitude = np.abs(values)
+    local = (magnitude[1:-1] > magnitude[:-2]) & (magnitude[1:-1] > magnitude[2:]) & (freqs[1:-1] > 10.0)
+    inner = np.nonzero(local)[0][:count] + 1
+    return ", ".join(f"{freqs[i]:.0f} Hz {magnitude[i] / 1e3:.0f}" for i in inner)
+
+
+def compare_dynamics(spec, tire, state) -> None:
+    freqs = np.arange(0.0, 401.0)
+    t0 = time.perf_counter()
+    lin = dynamics.linearise(tire, state)
+    t1 = time.perf_counter()
+    reduced = dynamics.reduce(lin, float(freqs.max()))
+    t2 = time.perf_counter()
+    frf = dynamics.footprint_frf(lin, freqs, reduced)
+    t3 = time.perf_counter()
+    print(
+        f"dynamics about the loaded state: linearise {t1 - t0:.0f} s, reduce {t2 - t1:.0f} s "
+        f"({reduced.n_modes} modes at rest below {dynamics.CUTOFF_FACTOR * freqs.max():.0f} Hz, "
+        f"{reduced.mass.shape[0]} coordinates), FRFs at {freqs.size} frequencies {t3 - t2:.0f} s"
+    )
+    model = tire_model(spec)
+    case = model.case()
+    reference = model.fixed_hub_frfs(case, freqs)
+    rows = row_influence(model.load(case), reference.H[:, 0].real)["H(0) of the row (N/mm)"].to_numpy()
+    nodes = tire.mesh.coordinates[state.contact]
+    theta = np.arctan2(nodes[:, 0], -nodes[:, 2])
+    radius = np.hypot(nodes[:, 0], nodes[:, 2]).mean()
+    ends = np.abs(theta) * radius > np.abs(theta).max() * radius - 0.015
+    share = frf.hub[0].real[ends].sum() / frf.H_tot[0].real
+    print("  tire      | H_tot(0) N/mm | first peaks of |H_tot| (N/mm)       | of |G_H|                  | ends' share")
+    print(
+        f"  loaded FE | {frf.H_tot[0].real / 1e3:13.1f} | {peaks(frf.H_tot, freqs):35s} | {peaks(-frf.G_H, freqs, 3):25s} | {share:.2f}"
+    )
+    print(
+        f"  waveguide | {reference.H_tot[0].real / 1e3:13.1f} | {peaks(reference.H_tot, freqs):35s} | "
+        f"{peaks(reference.G_H, freqs, 3):25s} | {(rows[0] + rows[-1]) / rows.sum():.2f}"
+    )
 
 
 def main() -> None:
@@ -159,6 +214,7 @@ def main() -> None:
     parser.add_argument("--arcs", type=float, nargs="+", default=[0.02])
     parser.add_argument("--step", type=float, default=0.001)
     parser.add_argument("--no-nonlinear", dest="nonlinear", action="store_false")
+    parser.add_argument("--no-dynamics", dest="dynamics", action="store_false")
     parser.add_argument("--modes", type=int, default=0, help="uniform arcs for the modes' comparison (0: none)")
     args = parser.parse_args()
     # one contact column per tassello column: the coarse crown's tread nodes are ~15 mm apart
@@ -183,7 +239,9 @@ def main() -> None:
         )
         compare_linearised(round_compliance, compliance, states)
         if args.nonlinear:
-            load_nonlinear(tire, inflated, compliance, spec.operating.vertical_load, args.step)
+            state = load_nonlinear(tire, inflated, compliance, spec.operating.vertical_load, args.step)
+            if args.dynamics:
+                compare_dynamics(spec, tire, state)
 
 
 if __name__ == "__main__":
