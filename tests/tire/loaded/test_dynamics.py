@@ -8,10 +8,12 @@ direct one over the band.
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import pytest
 
-from roadnoise_utils.tire.loaded import dynamics, statics
+from roadnoise_utils.tire.loaded import dynamics, footprint, statics
 
 FREQS = np.array([0.0, 100.0, 250.0, 400.0])
 
@@ -70,3 +72,24 @@ def test_bad_input_is_refused_naming_it(tire, inflated, linearised):
             dynamics.footprint_frf_direct(linearised, freqs)
     with pytest.raises(ValueError, match="f_max"):
         dynamics.reduce(linearised, 0.0)
+
+
+def test_the_footprint_s_tasselli_partition_its_nodes_and_carry_their_transfer(tire, loaded, direct):
+    """Every contact node in one tassello, weights summing to one per tassello, the tasselli's H summing
+    to H_tot, the nodes found on their rings and columns, and a left-right symmetric footprint giving
+    tasselli symmetric across."""
+    tasselli = footprint.loaded_tasselli(tire, loaded)
+    assert tasselli.node_x.size == loaded.contact.size
+    np.testing.assert_allclose(np.bincount(tasselli.node_tassello, weights=tasselli.node_weight), 1.0, rtol=1e-12)
+    result = footprint.frf_result(direct, tasselli)
+    np.testing.assert_allclose(result.H_sum, result.H_tot, rtol=1e-12)
+    np.testing.assert_allclose(result.H_points, direct.hub.T)
+    np.testing.assert_allclose(np.sort(tasselli.centre_y), np.sort(-tasselli.centre_y), atol=1e-12)
+    ring, column = footprint.contact_grid(tire, loaded)
+    assert np.array_equal(tire.tread.reshape(tire.mesh.theta.size, -1)[ring, column], loaded.contact)
+    with pytest.raises(ValueError, match="contact nodes"):
+        footprint.frf_result(
+            direct, footprint.loaded_tasselli(tire, dataclasses.replace(loaded, contact=loaded.contact[:2]))
+        )
+    with pytest.raises(ValueError, match="touches no road"):
+        footprint.loaded_tasselli(tire, dataclasses.replace(loaded, contact=loaded.contact[:0]))
