@@ -15,10 +15,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..model import FRFResult
+from ..model import Footprint, FRFResult, LoadCase
 from ..tasselli import Tasselli, tassellate
 from .dynamics import LoadedFootprintFRF
-from .statics import LoadedTire, StaticState
+from .statics import LoadedTire, StaticState, vertical_stiffness
 
 
 def contact_grid(tire: LoadedTire, state: StaticState) -> tuple[np.ndarray, np.ndarray]:
@@ -69,6 +69,27 @@ def loaded_tasselli(tire: LoadedTire, state: StaticState) -> Tasselli:
         strips_per_column=1,
         node_width=width,
         node_column=band,
+    )
+
+
+def loaded_footprint(tire: LoadedTire, state: StaticState) -> Footprint:
+    """The loaded state as every model's :class:`~roadnoise_utils.tire.model.Footprint` on the flat road.
+
+    The deflection is the road's lift from touching the inflated tire; the contact pressure at a
+    node is its road reaction over its tributary strip's area (so the pressures times the areas
+    sum to the load); ``K_v`` is the condensed tangent's, the contact set held.
+    """
+    tasselli = loaded_tasselli(tire, state)
+    area = 0.5 * (tasselli.node_dx_minus + tasselli.node_dx_plus) * tasselli.widths
+    load = state.road_force
+    return Footprint(
+        road=LoadCase.of("flat", load).road,
+        load=load,
+        deflection=state.road_lift,
+        hub_force=float(-state.reactions[tire.fixed[tire.fixed % 3 == 2]].sum()),
+        vertical_stiffness=vertical_stiffness(tire, state),
+        tasselli=tasselli,
+        node_pressure=state.reactions[3 * state.contact + 2] / area,
     )
 
 

@@ -93,3 +93,13 @@ def test_the_footprint_s_tasselli_partition_its_nodes_and_carry_their_transfer(t
         )
     with pytest.raises(ValueError, match="touches no road"):
         footprint.loaded_tasselli(tire, dataclasses.replace(loaded, contact=loaded.contact[:0]))
+
+
+def test_the_loaded_footprint_balances_the_load_with_its_pressures_and_the_hub(tire, loaded):
+    """The pressures times the nodes' strips sum to the road's force, the hub carries it, and the
+    footprint's K_v is the condensed tangent's: the Footprint every model gives, from the loaded state."""
+    fp = footprint.loaded_footprint(tire, loaded)
+    area = 0.5 * (fp.tasselli.node_dx_minus + fp.tasselli.node_dx_plus) * fp.tasselli.widths
+    assert abs(np.sum(fp.node_pressure * area) / loaded.road_force - 1) < 1e-12
+    assert fp.force_balance() < 1e-9 and np.all(fp.node_pressure > 0)
+    assert fp.deflection == loaded.road_lift and fp.vertical_stiffness == statics.vertical_stiffness(tire, loaded)
