@@ -26,8 +26,10 @@ the swept solids take arcs of ``--arcs`` (m) over the footprint sector (+-0.28 r
 4. the dynamics about the loaded state at the file's load (``--no-dynamics`` skips it): the
    linearisation, the reduced basis and the footprint FRFs 0-400 Hz every 1 Hz (times, modes),
    beside the waveguide tire's FRFs at the same load: H_tot at rest and its first peaks, G_H's
-   first peaks, and the share of the static stiffness within 15 mm of the footprint's ends (the
-   waveguide's: its end rows of tasselli).
+   first peaks, the share of the static stiffness within 15 mm of the footprint's ends (the
+   waveguide's: its end rows of tasselli), the tasselli, the peak contact pressure and the linear
+   chain's quasi-static peak of the paper's 15 x 15 mm cleat on the flat road (the static
+   influences H_i(0) times the cleat's tassello inputs, at its worst position).
 
 ``--modes N`` first compares the inflated, unloaded modes n = 0..6 on N uniform arcs with the
 waveguide's: each solid mode's harmonic is the one that carries most of its displacement.
@@ -43,20 +45,21 @@ import numpy as np
 import scipy.sparse.linalg as spla
 
 import roadnoise_utils as ru
-from roadnoise_utils.experiments.cleat import row_influence
+from roadnoise_utils.experiments.cleat import quasi_static_force, row_influence
+from roadnoise_utils.experiments.paper_defaults import cleat_input
 from roadnoise_utils.guards import RoadnoiseWarning
 from roadnoise_utils.tire.banded import BandedCholesky
 from roadnoise_utils.tire.cross_section import static as section_static
 from roadnoise_utils.tire.cross_section.checks import harmonic_frequencies
 from roadnoise_utils.tire.cross_section.operators import harmonic_operators
-from roadnoise_utils.tire.loaded import dynamics, linearised, solid, statics
+from roadnoise_utils.tire.loaded import dynamics, footprint, linearised, solid, statics
 from roadnoise_utils.tire.loaded.mesh import graded_arcs
 from roadnoise_utils.tire.model import tire_model
 
 LOADS = (1000.0, 2000.0, 3000.0, 4512.0)
 
 
-def footprint(tire: statics.LoadedTire, state: statics.StaticState) -> tuple[float, float]:
+def footprint_size(tire: statics.LoadedTire, state: statics.StaticState) -> tuple[float, float]:
     """Length and width (m) of the held nodes' deformed positions."""
     x = tire.mesh.coordinates[state.contact] + state.u.reshape(-1, 3)[state.contact]
     return float(np.ptp(x[:, 0])), float(np.ptp(x[:, 1]))
@@ -149,7 +152,7 @@ def load_nonlinear(tire, inflated, compliance, load: float, step: float) -> stat
             state = statics.press_on_flat_road(tire, inflated, lift, steps=1, start=state)
         seconds = time.perf_counter() - t0
         k_v = statics.vertical_stiffness(tire, state)
-        length, width = footprint(tire, state)
+        length, width = footprint_size(tire, state)
         linear = linearised.flat_road_at_lift(compliance, lift).load
         acoustic = min(float(v.min()) for v in solid.ellipticity(tire.groups, state.u))
         print(
@@ -196,6 +199,19 @@ def compare_dynamics(spec, tire, state) -> None:
     radius = np.hypot(nodes[:, 0], nodes[:, 2]).mean()
     ends = np.abs(theta) * radius > np.abs(theta).max() * radius - 0.015
     share = frf.hub[0].real[ends].sum() / frf.H_tot[0].real
+    loaded_fp = footprint.loaded_footprint(tire, state)
+    fe_h0 = footprint.frf_result(frf, loaded_fp.tasselli).H[:, 0].real
+    section_fp = model.load(case)
+    cleat = {
+        name: float(quasi_static_force(h0, cleat_input(fp, 0.1, distance=(-0.1, 0.1))).max())
+        for name, fp, h0 in (("FE", loaded_fp, fe_h0), ("waveguide", section_fp, reference.H[:, 0].real))
+    }
+    print(
+        f"  footprint: {loaded_fp.tasselli.n} tasselli (waveguide {section_fp.tasselli.n}), peak pressure "
+        f"{loaded_fp.node_pressure.max() / 1e6:.2f} MPa (waveguide {section_fp.node_pressure.max() / 1e6:.2f}); "
+        f"the linear chain's quasi-static peak of the paper's cleat on the flat road: {cleat['FE']:.0f} N "
+        f"(waveguide {cleat['waveguide']:.0f} N)"
+    )
     print("  tire      | H_tot(0) N/mm | first peaks of |H_tot| (N/mm)       | of |G_H|                  | ends' share")
     print(
         f"  loaded FE | {frf.H_tot[0].real / 1e3:13.1f} | {peaks(frf.H_tot, freqs):35s} | {peaks(-frf.G_H, freqs, 3):25s} | {share:.2f}"
