@@ -7,11 +7,13 @@ road) and ``y``; the distance to the neighbouring rings' nodes of its column alo
 the distance to its neighbours across, give the tributary strip the road's height is averaged
 over (:mod:`roadnoise_utils.tire.tasselli`, the paper's weighting by the elements' shape
 functions). Rows of tasselli are bands of the file's ``[tasselli] target_length`` at most, as on
-the other models; columns are equal lateral bands of about that width, so the tasselli are about
-square (the paper's ~8000-DOF tire: 71 tasselli).
+the other models; columns are equal lateral bands no wider, so the tasselli are at most square
+(the paper's ~8000-DOF tire: 71 tasselli).
 """
 
 from __future__ import annotations
+
+import dataclasses
 
 import numpy as np
 
@@ -33,7 +35,8 @@ def contact_grid(tire: LoadedTire, state: StaticState) -> tuple[np.ndarray, np.n
 
 
 def loaded_tasselli(tire: LoadedTire, state: StaticState) -> Tasselli:
-    """The contact nodes of ``state`` in tasselli (see the module notes)."""
+    """The contact nodes of ``state`` in tasselli (see the module notes), each node weighted in its
+    tassello by the integral of its shape function over the tread (:func:`shape_function_areas`)."""
     if state.contact.size == 0:
         raise ValueError("state: the tire touches no road (give a loaded state: statics.press_on_flat_road)")
     ring, column = contact_grid(tire, state)
@@ -53,11 +56,16 @@ def loaded_tasselli(tire: LoadedTire, state: StaticState) -> Tasselli:
     gaps = np.abs(np.stack([y - left, right - y]))
     width = np.where(np.isnan(gaps), np.nanmax(gaps, axis=0), gaps).sum(axis=0) / 2  # an edge node: its inner gap
     target = tire.spec.tasselli.target_length
-    edges = (y - width / 2).min(), (y + width / 2).max()
-    n_bands = max(1, int(round((edges[1] - edges[0]) / target)))
-    band_width = (edges[1] - edges[0]) / n_bands
-    band = np.clip(((y - edges[0]) / band_width).astype(int), 0, n_bands - 1)
-    return tassellate(
+    outer = (y - width / 2).min(), (y + width / 2).max()
+    n_bands = int(np.ceil((outer[1] - outer[0]) / target - 1e-9))
+    centre_line = 0.5 * (outer[0] + outer[1])
+    if n_bands % 2 == 0 and np.any(np.abs(y - centre_line) < 1e-9):
+        n_bands += 1  # a node on the centre line: an odd number of bands keeps it off their edges
+    band_width = (outer[1] - outer[0]) / n_bands
+    # a node on a band edge goes to the band nearer the centre line (a symmetric footprint: symmetric columns)
+    where = (y - outer[0]) / band_width
+    band = np.where(where < n_bands / 2, np.floor(where + 1e-9), np.ceil(where - 1e-9) - 1)
+    hats = tassellate(
         node_strip=column,
         node_index=ring,
         node_x=x,
@@ -68,19 +76,47 @@ def loaded_tasselli(tire: LoadedTire, state: StaticState) -> Tasselli:
         target_length=target,
         strips_per_column=1,
         node_width=width,
-        node_column=band,
+        node_column=np.clip(band, 0, n_bands - 1).astype(int),
     )
+    area = shape_function_areas(tire, state)
+    weight = area / np.bincount(hats.node_tassello, weights=area)[hats.node_tassello]
+    return dataclasses.replace(hats, node_weight=weight)
+
+
+def shape_function_areas(tire: LoadedTire, state: StaticState) -> np.ndarray:
+    """The integral over the loaded tread of each contact node's shape function (m^2): a uniform
+    pressure's nodal force per unit pressure.
+
+    The tread's faces are quadratic along the circumference and across (corner nodes on the even
+    rings and columns), so a corner node takes a sixth of each neighbouring element's length and a
+    mid node two thirds of its own, in each direction (Simpson's weights), at the deformed positions.
+    """
+    ring, column = contact_grid(tire, state)
+    position = tire.mesh.coordinates + state.u.reshape(-1, 3)
+    tread = tire.tread.reshape(tire.mesh.theta.size, -1)
+    n_rings, n_columns = tread.shape
+
+    def along_ring(step: int) -> np.ndarray:
+        return np.abs(position[tread[(ring + step) % n_rings, column], 0] - position[tread[ring, column], 0])
+
+    def across(step: int) -> np.ndarray:
+        other = np.clip(column + step, 0, n_columns - 1)
+        return np.abs(position[tread[ring, other], 1] - position[tread[ring, column], 1])
+
+    length = np.where(ring % 2 == 0, (along_ring(-2) + along_ring(2)) / 6, 2 * (along_ring(-1) + along_ring(1)) / 3)
+    width = np.where(column % 2 == 0, (across(-2) + across(2)) / 6, 2 * (across(-1) + across(1)) / 3)
+    return length * width
 
 
 def loaded_footprint(tire: LoadedTire, state: StaticState) -> Footprint:
     """The loaded state as every model's :class:`~roadnoise_utils.tire.model.Footprint` on the flat road.
 
     The deflection is the road's lift from touching the inflated tire; the contact pressure at a
-    node is its road reaction over its tributary strip's area (so the pressures times the areas
-    sum to the load); ``K_v`` is the condensed tangent's, the contact set held.
+    node is its road reaction over its shape function's area (the pressure a uniform field would
+    give it: no checkerboard of the quadratic faces' 1/6 : 2/3 split); ``K_v`` is the condensed
+    tangent's, the contact set held.
     """
     tasselli = loaded_tasselli(tire, state)
-    area = 0.5 * (tasselli.node_dx_minus + tasselli.node_dx_plus) * tasselli.widths
     load = state.road_force
     return Footprint(
         road=LoadCase.of("flat", load).road,
@@ -89,7 +125,7 @@ def loaded_footprint(tire: LoadedTire, state: StaticState) -> Footprint:
         hub_force=float(-state.reactions[tire.fixed[tire.fixed % 3 == 2]].sum()),
         vertical_stiffness=vertical_stiffness(tire, state),
         tasselli=tasselli,
-        node_pressure=state.reactions[3 * state.contact + 2] / area,
+        node_pressure=state.reactions[3 * state.contact + 2] / shape_function_areas(tire, state),
     )
 
 

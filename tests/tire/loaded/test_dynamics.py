@@ -96,10 +96,26 @@ def test_the_footprint_s_tasselli_partition_its_nodes_and_carry_their_transfer(t
 
 
 def test_the_loaded_footprint_balances_the_load_with_its_pressures_and_the_hub(tire, loaded):
-    """The pressures times the nodes' strips sum to the road's force, the hub carries it, and the
-    footprint's K_v is the condensed tangent's: the Footprint every model gives, from the loaded state."""
+    """The pressures over the nodes' shape functions give back the road's force, the hub carries it,
+    mirrored nodes press alike, and the footprint's K_v is the condensed tangent's: the Footprint
+    every model gives, from the loaded state."""
     fp = footprint.loaded_footprint(tire, loaded)
-    area = 0.5 * (fp.tasselli.node_dx_minus + fp.tasselli.node_dx_plus) * fp.tasselli.widths
+    area = footprint.shape_function_areas(tire, loaded)
     assert abs(np.sum(fp.node_pressure * area) / loaded.road_force - 1) < 1e-12
+    y = fp.tasselli.node_y
+    np.testing.assert_allclose(fp.node_pressure[np.argsort(y)], fp.node_pressure[np.argsort(-y)], rtol=1e-9)
     assert fp.force_balance() < 1e-9 and np.all(fp.node_pressure > 0)
     assert fp.deflection == loaded.road_lift and fp.vertical_stiffness == statics.vertical_stiffness(tire, loaded)
+
+
+@pytest.mark.parametrize("target", [0.0165, 0.0185, 0.0245])
+def test_the_tasselli_columns_are_symmetric_and_no_wider_than_the_rows(tire, loaded, target):
+    """A node on a band edge goes to the band nearer the centre line (an even number of bands
+    splits a symmetric footprint symmetrically), and the bands are at most the target wide."""
+    narrow = dataclasses.replace(tire, spec=tire.spec.replace(**{"tasselli.target_length": target}))
+    tasselli = footprint.loaded_tasselli(narrow, loaded)
+    column = tasselli.column[tasselli.node_tassello]
+    for node, y in enumerate(tasselli.node_y):
+        (mirror,) = np.nonzero(np.abs(tasselli.node_y + y) < 1e-9)[0]
+        assert column[mirror] == column.max() - column[node]
+    assert tasselli.strip_width <= target + 1e-12
