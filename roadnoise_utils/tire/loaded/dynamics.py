@@ -94,16 +94,16 @@ def tangent_parts(tire: LoadedTire, u: np.ndarray, p: float) -> tuple[dict, sp.c
         f = solid.deformation_gradient(group, u)
         stress, d = solid.stress_and_tangent(solid.green_strain(f), group.materials)
         b = solid.strain_operator(f, group.grad)
-        geometric.append(solid._element_tangent(group, b, np.zeros_like(d), stress))
+        geometric.append(solid.element_tangent(group, b, np.zeros_like(d), stress))
         for index, name in enumerate(names):
             own = group.compound == index
             material[name].append(
-                solid._element_tangent(group, b, d * own[None, :, None, None], np.zeros_like(stress))
+                solid.element_tangent(group, b, d * own[None, :, None, None], np.zeros_like(stress))
                 if own.any()
                 else np.zeros((group.elements.size, 81, 81))
             )
-    compounds = {name: solid._assemble_blocks(tire.groups, blocks, tire.n_dof) for name, blocks in material.items()}
-    pneumatic = solid._assemble_blocks(tire.groups, geometric, tire.n_dof) - pressure.pressure_stiffness(
+    compounds = {name: solid.assemble_blocks(tire.groups, blocks, tire.n_dof) for name, blocks in material.items()}
+    pneumatic = solid.assemble_blocks(tire.groups, geometric, tire.n_dof) - pressure.pressure_stiffness(
         tire.mesh, tire.surface, u, p
     )
     return compounds, pneumatic.tocsr()

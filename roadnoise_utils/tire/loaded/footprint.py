@@ -34,9 +34,10 @@ def contact_grid(tire: LoadedTire, state: StaticState) -> tuple[np.ndarray, np.n
     return ring, column
 
 
-def loaded_tasselli(tire: LoadedTire, state: StaticState) -> Tasselli:
+def loaded_tasselli(tire: LoadedTire, state: StaticState, areas: np.ndarray | None = None) -> Tasselli:
     """The contact nodes of ``state`` in tasselli (see the module notes), each node weighted in its
-    tassello by the integral of its shape function over the tread (:func:`shape_function_areas`)."""
+    tassello by the integral of its shape function over the tread (``areas``, m^2, if computed
+    already: :func:`shape_function_areas`)."""
     if state.contact.size == 0:
         raise ValueError("state: the tire touches no road (give a loaded state: statics.press_on_flat_road)")
     ring, column = contact_grid(tire, state)
@@ -78,7 +79,7 @@ def loaded_tasselli(tire: LoadedTire, state: StaticState) -> Tasselli:
         node_width=width,
         node_column=np.clip(band, 0, n_bands - 1).astype(int),
     )
-    area = shape_function_areas(tire, state)
+    area = shape_function_areas(tire, state) if areas is None else areas
     weight = area / np.bincount(hats.node_tassello, weights=area)[hats.node_tassello]
     return dataclasses.replace(hats, node_weight=weight)
 
@@ -116,7 +117,8 @@ def loaded_footprint(tire: LoadedTire, state: StaticState) -> Footprint:
     give it: no checkerboard of the quadratic faces' 1/6 : 2/3 split); ``K_v`` is the condensed
     tangent's, the contact set held.
     """
-    tasselli = loaded_tasselli(tire, state)
+    areas = shape_function_areas(tire, state)
+    tasselli = loaded_tasselli(tire, state, areas)
     load = state.road_force
     return Footprint(
         road=LoadCase.of("flat", load).road,
@@ -125,7 +127,7 @@ def loaded_footprint(tire: LoadedTire, state: StaticState) -> Footprint:
         hub_force=float(-state.reactions[tire.fixed[tire.fixed % 3 == 2]].sum()),
         vertical_stiffness=vertical_stiffness(tire, state),
         tasselli=tasselli,
-        node_pressure=state.reactions[3 * state.contact + 2] / shape_function_areas(tire, state),
+        node_pressure=state.reactions[3 * state.contact + 2] / areas,
     )
 
 

@@ -236,10 +236,10 @@ def group_force_and_tangent(
     m, q = group.volume.shape
     flat_b = b.reshape(m, q * 6, 81)
     force = np.matmul((stress * group.volume[..., None]).reshape(m, 1, q * 6), flat_b)[:, 0]
-    return force, (_element_tangent(group, b, d, stress) if tangent else None)
+    return force, (element_tangent(group, b, d, stress) if tangent else None)
 
 
-def _element_tangent(group: ElementGroup, b: np.ndarray, d: np.ndarray, stress: np.ndarray) -> np.ndarray:
+def element_tangent(group: ElementGroup, b: np.ndarray, d: np.ndarray, stress: np.ndarray) -> np.ndarray:
     """Element stiffness (m, 81, 81): material part from ``B`` and ``D``, geometric part from the stress ``S``."""
     m, q = group.volume.shape
     flat_b = b.reshape(m, q * 6, 81)
@@ -256,7 +256,7 @@ def _element_tangent(group: ElementGroup, b: np.ndarray, d: np.ndarray, stress: 
     return k
 
 
-def _assemble_blocks(groups: list[ElementGroup], blocks: list[np.ndarray], n_dof: int) -> sp.csr_matrix:
+def assemble_blocks(groups: list[ElementGroup], blocks: list[np.ndarray], n_dof: int) -> sp.csr_matrix:
     """Global sparse matrix of the element matrices ``blocks`` (one array per group)."""
     rows = [np.broadcast_to(g.dofs[:, :, None], k_e.shape).ravel() for g, k_e in zip(groups, blocks)]
     cols = [np.broadcast_to(g.dofs[:, None, :], k_e.shape).ravel() for g, k_e in zip(groups, blocks)]
@@ -272,7 +272,7 @@ def assemble(groups: list[ElementGroup], u: np.ndarray, n_dof: int) -> tuple[np.
         f_e, k_e = group_force_and_tangent(group, u)
         np.add.at(force, group.dofs, f_e)
         blocks.append(k_e)
-    return force, _assemble_blocks(groups, blocks, n_dof)
+    return force, assemble_blocks(groups, blocks, n_dof)
 
 
 def prestressed_tangent(groups: list[ElementGroup], u: np.ndarray, n_dof: int) -> sp.csr_matrix:
@@ -292,8 +292,8 @@ def prestressed_tangent(groups: list[ElementGroup], u: np.ndarray, n_dof: int) -
         _, d = stress_and_tangent(np.zeros(group.volume.shape + (6,)), group.materials)
         u_e = u[group.dofs].reshape(-1, 1, 81, 1)
         stress = np.matmul(d, np.matmul(b, u_e))[..., 0]
-        blocks.append(_element_tangent(group, b, d, stress))
-    return _assemble_blocks(groups, blocks, n_dof)
+        blocks.append(element_tangent(group, b, d, stress))
+    return assemble_blocks(groups, blocks, n_dof)
 
 
 def internal_force(groups: list[ElementGroup], u: np.ndarray, n_dof: int) -> np.ndarray:
@@ -320,4 +320,4 @@ def mass_matrix(groups: list[ElementGroup], n_dof: int) -> sp.csr_matrix:
     for group in groups:
         nn = np.einsum("qa,qb,q,mq->mab", group.shape, group.shape, group.density, group.volume)
         blocks.append(np.einsum("mab,ij->maibj", nn, np.eye(3)).reshape(-1, 81, 81))
-    return _assemble_blocks(groups, blocks, n_dof)
+    return assemble_blocks(groups, blocks, n_dof)
