@@ -72,14 +72,8 @@ class LinearisedTire:
 
     def stiffness(self, omega: float) -> sp.csr_matrix:
         """:math:`\\sum_c g_c K_c + g_p K_p` at ``omega`` (rad/s), complex (N/m)."""
-        total = self.pneumatic * _ratio(self.laws, self.pneumatic_law, omega)
-        for name, part in self.compounds.items():
-            total = total + part * _ratio(self.laws, name, omega)
-        return total.tocsr()
-
-    def dynamic_stiffness(self, omega: float) -> sp.csr_matrix:
-        """:math:`D(\\omega) = K(\\omega) - \\omega^2 M` (N/m), complex, all DOF."""
-        return (self.stiffness(omega) - omega**2 * self.mass).tocsr()
+        weights = _weights(self.laws, self.pneumatic_law, list(self.compounds), omega)[:-1]
+        return sum(w * part for w, part in zip(weights, [self.pneumatic, *self.compounds.values()])).tocsr()
 
 
 def tangent_parts(tire: LoadedTire, u: np.ndarray, p: float) -> tuple[dict, sp.csr_matrix]:
@@ -242,9 +236,8 @@ class ReducedFootprint:
 
     def boundary_stiffness(self, omega: float) -> np.ndarray:
         """The boundary's condensed dynamic stiffness at ``omega`` (rad/s), (n_boundary, n_boundary) complex."""
-        d = self.pneumatic * _ratio(self.laws, self.pneumatic_law, omega) - omega**2 * self.mass
-        for name, part in self.compounds.items():
-            d = d + part * _ratio(self.laws, name, omega)
+        weights = _weights(self.laws, self.pneumatic_law, list(self.compounds), omega)
+        d = sum(w * part for w, part in zip(weights, [self.pneumatic, *self.compounds.values(), self.mass]))
         b = self.n_boundary
         return d[:b, :b] - d[:b, b:] @ np.linalg.solve(d[b:, b:], d[b:, :b])
 
