@@ -48,6 +48,7 @@ from .tire.cross_section import model as _cross_section_model  # noqa: F401 - re
 from .tire.cross_section import stages as section_stages
 from .tire.frf_file import model as _frf_file_model  # noqa: F401 - registers the model
 from .tire.frf_file.export import export_frf_files
+from .tire.loaded import model as _loaded_model  # noqa: F401 - registers the model
 from .tire.model import Footprint, FRFResult, LoadCase, NotApplicable, TireModel, tire_model
 from .tire.ring import model as _ring_model  # noqa: F401 - registers the model
 from .tire.ring.closed_form import ring_check, ring_frequencies, ring_parameters

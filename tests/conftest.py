@@ -79,6 +79,27 @@ COARSE_SECTION = {
 }
 
 
+#: The loaded FE tire's test mesh: the section at 4 crown and 2 x 2 sidewall elements (tread nodes 15 mm
+#: apart, within the footprint files' 25 mm) swept through 40 mm arcs over +-40 mm at the bottom, growing
+#: threefold per arc (8 arcs, 4080 DOF), loaded to 1 kN on the flat road in 2.5 mm road steps.
+SMALL_LOADED = {
+    "solid_mesh.crown_elements": 4,
+    "solid_mesh.sidewall_elements": 2,
+    "solid_mesh.footprint_arc": 0.04,
+    "solid_mesh.sector_half_angle": 0.14,
+    "solid_mesh.coarse_arc": 0.4,
+    "solid_mesh.arc_growth": 3.0,
+    "solid_mesh.road_step": 0.0025,
+    "operating.vertical_load": 1000.0,
+}
+
+
+@pytest.fixture(scope="session")
+def small_loaded():
+    """The loaded FE 165/65 R14 on the test mesh of :data:`SMALL_LOADED` (its stages cached)."""
+    return ru.tire_model(ru.load_tire("165_65R14_loaded").replace(**SMALL_LOADED))
+
+
 @pytest.fixture(scope="session")
 def coarse_section():
     """The cross-section 165/65 R14's spec on the coarse grid of :data:`COARSE_SECTION`."""

@@ -37,7 +37,7 @@ def exported(tmp_path_factory):
 
 
 @pytest.fixture(scope="module", params=sorted(REGISTRY))
-def model(request, exported, coarse_section):
+def model(request, exported, coarse_section, small_loaded):
     kind = request.param
     if kind == "ring":
         return exported[0]
@@ -45,11 +45,13 @@ def model(request, exported, coarse_section):
         return ru.tire_model(coarse_section)
     if kind == "frf-file":
         return ru.tire_model(exported[1])
+    if kind == "loaded-fe":
+        return small_loaded
     pytest.fail(f"no small test tire for the registered model {kind!r}: add one here")
 
 
 def test_every_registered_model_is_tried():
-    assert {"ring", "cross-section", "frf-file"} <= set(REGISTRY)
+    assert {"ring", "cross-section", "frf-file", "loaded-fe"} <= set(REGISTRY)
 
 
 def test_the_footprint_partitions_its_contact_nodes_and_balances_the_load(model):
@@ -134,7 +136,8 @@ def test_a_tire_file_of_an_unknown_model_is_refused_naming_the_registered_ones(t
     path = tmp_path / "x.toml"
     path.write_text('[tire]\nmodel = "shell"\nname = "x"\n')
     with pytest.raises(
-        ValueError, match=r"\[tire\] model = 'shell': valid values are \['cross-section', 'frf-file', 'ring'\]"
+        ValueError,
+        match=r"\[tire\] model = 'shell': valid values are \['cross-section', 'frf-file', 'loaded-fe', 'ring'\]",
     ):
         ru.load_tire(path)
     path.write_text('[tire]\nname = "x"\n')

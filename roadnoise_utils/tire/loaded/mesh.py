@@ -78,12 +78,14 @@ class SolidMesh:
         return np.ravel(self.node(rings[:, None], self.section.bead_nodes[None, :]))
 
 
-def graded_arcs(radius: float, fine_length: float, sector_half_angle: float, coarse_length: float) -> np.ndarray:
+def graded_arcs(
+    radius: float, fine_length: float, sector_half_angle: float, coarse_length: float, growth: float = GROWTH
+) -> np.ndarray:
     """Arc boundaries (rad) of a circumference, fine in a sector around the bottom, coarse elsewhere.
 
     Arcs of at most ``fine_length`` (m, at ``radius``) cover ``-sector_half_angle..sector_half_angle``
     (an arc boundary at the bottom, ``theta = 0``);
-    beyond it they grow by at most :data:`GROWTH` per arc up to ``coarse_length``, and equal
+    beyond it they grow by at most ``growth`` (default :data:`GROWTH`) per arc up to ``coarse_length``, and equal
     arcs no longer than that fill the rest, symmetric about the bottom.
 
     Returns
@@ -93,6 +95,8 @@ def graded_arcs(radius: float, fine_length: float, sector_half_angle: float, coa
     """
     if not 0.0 < fine_length <= coarse_length:
         raise ValueError(f"fine_length = {fine_length!r} m must be > 0 and <= coarse_length = {coarse_length!r} m")
+    if not growth > 1.0:
+        raise ValueError(f"growth = {growth!r} must be > 1")
     if not 0.0 <= sector_half_angle < np.pi:
         raise ValueError(f"sector_half_angle = {sector_half_angle!r} rad must be in [0, pi)")
     n_half = max(1, int(np.ceil(sector_half_angle * radius / fine_length - 1e-9)))
@@ -100,8 +104,8 @@ def graded_arcs(radius: float, fine_length: float, sector_half_angle: float, coa
     side = list(np.full(n_half, fine))  # from the bottom (theta = 0) towards pi
     coarse = coarse_length / radius
     step = fine
-    while step * GROWTH < coarse and sum(side) + step * GROWTH < np.pi:
-        step *= GROWTH
+    while step * growth < coarse and sum(side) + step * growth < np.pi:
+        step *= growth
         side.append(step)
     rest = np.pi - sum(side)
     n_rest = int(np.ceil(rest / coarse - 1e-9)) if rest > 1e-12 else 0

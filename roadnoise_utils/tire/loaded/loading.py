@@ -1,0 +1,131 @@
+"""The inflated tire loaded to a vertical load: road steps up to the load, then the lift that carries it.
+
+The statics (:mod:`.statics`) press the road a given lift into the tire; a load case gives a
+force. :func:`load_on_flat_road` raises the road in steps of ``road_step`` until the road's force
+passes the load, then finds the lift that carries it exactly by Brent's method, which keeps the
+root bracketed, each solve starting from the nearest equilibrium. A load the tire cannot carry before the road reaches the rim, a step the
+Newton iterations cannot follow and a lift that will not settle are refused by name.
+"""
+
+from __future__ import annotations
+
+import warnings
+
+from scipy.optimize import brentq
+
+from ... import guards
+from ...guards import RoadnoiseWarning
+from . import statics
+from .statics import LoadedTire, StaticState
+
+#: The road's force must equal the load to this fraction (0.5 uN at 4.5 kN): below the footprint's force
+#: balance of 1e-9, above the Newton iterations' round-off (the hub and the road agree to ~1e-10).
+LOAD_TOLERANCE = 1e-10
+#: Iterations of Brent's method allowed to land on the load once it is bracketed.
+MAX_LANDING_ITERATIONS = 20
+
+
+def load_on_flat_road(tire: LoadedTire, inflated: StaticState, load: float, road_step: float) -> StaticState:
+    """The inflated tire pressed on the flat road until the road carries ``load`` (N).
+
+    Parameters
+    ----------
+    tire, inflated
+        The tire and its inflated state (:func:`.statics.inflate`).
+    load : float
+        Vertical load (N), within :data:`roadnoise_utils.guards.LOAD_RANGE`.
+    road_step : float
+        Road lift per load step (m): the steps the Newton iterations follow.
+
+    Returns
+    -------
+    StaticState
+        The equilibrium whose road force is ``load`` to :data:`LOAD_TOLERANCE`; its ``stable``
+        says whether it is a minimum of the potential (a saddle is warned of by the statics).
+
+    Raises
+    ------
+    ValueError
+        ``load`` outside its range or more than the tire carries before the road reaches the rim
+        (the message gives the most it carried); ``road_step`` not positive or too long for the
+        Newton iterations to follow.
+    """
+    load = guards.real("load", load, *guards.LOAD_RANGE, unit="N")
+    road_step = guards.real("road_step", road_step, 0.0, 0.05, lo_open=True, unit="m")
+    below, above = inflated, None
+    while above is None:
+        state = _pressed(tire, inflated, below.road_lift + road_step, below, load, road_step)
+        if state.road_force >= load:
+            above = state
+        else:
+            below = state
+    return _land(tire, inflated, load, below, above, road_step)
+
+
+def _pressed(
+    tire: LoadedTire, inflated: StaticState, lift: float, start: StaticState, load: float, road_step: float
+) -> StaticState:
+    """One road position from ``start``; the statics' errors restated in terms of the load case."""
+    try:
+        with warnings.catch_warnings():  # only the final state's stability is reported
+            warnings.simplefilter("ignore", RoadnoiseWarning)
+            return statics.press_on_flat_road(tire, inflated, lift, steps=1, start=start)
+    except ValueError as exc:
+        if "the tire bottoms" not in str(exc):
+            raise
+        raise ValueError(
+            f"load = {load:g} N: the tire carries at most {start.road_force:.0f} N before the road reaches the rim "
+            f"at {inflated.pressure / 1e5:g} bar (a lift of {start.road_lift * 1e3:.1f} mm): lower the load or raise "
+            "the inflation pressure"
+        ) from None
+    except (RuntimeError, FloatingPointError) as exc:
+        raise ValueError(
+            f"road_step = {road_step:g} m: the static solve did not follow a road step from "
+            f"{start.road_lift * 1e3:.2f} mm ({exc}); give a shorter road step"
+        ) from None
+
+
+class _Landed(Exception):
+    """Raised inside Brent's iterations once a state carries the load (no need to shrink the bracket further)."""
+
+
+def _land(
+    tire: LoadedTire, inflated: StaticState, load: float, below: StaticState, above: StaticState, road_step: float
+) -> StaticState:
+    """The state between the bracket ``below``/``above`` whose road force is ``load``: Brent's method on
+    the lift (:func:`scipy.optimize.brentq`), each solve starting from the nearest equilibrium found,
+    stopped as soon as a state carries the load to :data:`LOAD_TOLERANCE`."""
+    states = {below.road_lift: below, above.road_lift: above}
+
+    def miss(lift: float) -> float:
+        if lift not in states:
+            nearest = states[min(states, key=lambda known: abs(known - lift))]
+            states[lift] = _pressed(tire, inflated, lift, nearest, load, road_step)
+        value = states[lift].road_force - load
+        if abs(value) <= LOAD_TOLERANCE * load:
+            raise _Landed
+        return value
+
+    try:
+        brentq(miss, below.road_lift, above.road_lift, xtol=1e-15, maxiter=MAX_LANDING_ITERATIONS)
+    except (_Landed, RuntimeError):  # landed; or out of iterations, refused below
+        pass
+    best = min(states.values(), key=lambda state: abs(state.road_force - load))
+    if abs(best.road_force - load) > LOAD_TOLERANCE * load:
+        raise ValueError(
+            f"load = {load:g} N: the road's force did not settle on the load within {LOAD_TOLERANCE:g} in "
+            f"{MAX_LANDING_ITERATIONS} iterations (closest {best.road_force:.6f} N): the contact set is changing "
+            "at this load; give a shorter road_step"
+        )
+    return _final(tire, best, load)
+
+
+def _final(tire: LoadedTire, state: StaticState, load: float) -> StaticState:
+    """The landed state, warned of if it is a saddle of the potential."""
+    if not state.stable:
+        guards.warn(
+            f"the loaded state at {load:.0f} N is a saddle of the potential, not a minimum: its tangent has a "
+            "negative direction (e.g. the cord plies compressed in the footprint buckling between the nodes), so "
+            "its stiffness and footprint are those of an equilibrium the tire would leave; lower the load"
+        )
+    return state

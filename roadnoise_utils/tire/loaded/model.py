@@ -1,0 +1,65 @@
+"""The loaded FE tire as a :class:`~roadnoise_utils.tire.model.TireModel`.
+
+The paper's own kind of FE tire: the construction swept into 3-D solids, mounted, inflated and
+pressed on the road by large-deformation statics, its dynamics linearised about that loaded
+state. Its stages are cached by :mod:`.stages`; this class answers the pipeline's calls with them.
+Its contact is with the flat road; the drum, the one-sided cleat, the modal reduction and the air
+cavity are not part of it (:meth:`~roadnoise_utils.tire.model.TireModel.require` says so).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ..model import Footprint, FRFResult, LoadCase, TireModel, register
+from . import dynamics, loading, stages, statics
+from .spec import LoadedSpec, from_dict
+
+
+@register
+class LoadedFEModel(TireModel):
+    """The 3-D FE tire linearised about its nonlinear loaded state (:mod:`roadnoise_utils.tire.loaded`)."""
+
+    kind = "loaded-fe"
+    capabilities = frozenset({"fe_mesh", "hub_transfer"})
+
+    @classmethod
+    def parse(cls, data: dict[str, Any], source: str, path: Path | None = None) -> LoadedSpec:
+        return from_dict(data, source=source, folder=None if path is None else Path(path).parent)
+
+    @property
+    def default_load(self) -> float:
+        return self.spec.vertical_load
+
+    def degrees_of_freedom(self) -> str:
+        return f"{stages.built_tire(self.spec).n_dof} (3-D solids)"
+
+    def equivalent_dof(self) -> int:
+        """Its solid mesh's degrees of freedom, rim included."""
+        return int(stages.built_tire(self.spec).n_dof)
+
+    def rim_side_mass(self) -> float:
+        """0 kg: its :math:`G_H` holds the inertia of the rim's nodes (the beads)."""
+        return 0.0
+
+    def frf_runs(self) -> tuple:
+        return (dynamics, loading, statics)
+
+    def load(self, case: LoadCase) -> Footprint:
+        """:func:`.stages.loaded_footprint` (cached): the loaded state on the flat road."""
+        return stages.loaded_footprint(self.spec, case)
+
+    def fixed_hub_frfs(
+        self, case: LoadCase, freqs: np.ndarray | None = None, progress: bool = False, stick: bool | None = None
+    ) -> FRFResult:
+        """:func:`.stages.loaded_frfs` (cached; default 0-400 Hz every 1 Hz). Its contact nodes are held
+        vertically and slide freely along the road, so ``stick`` must be ``None`` or ``False``."""
+        if stick:
+            raise ValueError(
+                "stick = True: the loaded FE tire's contact nodes slide freely (frictionless, held vertically "
+                "only); valid values are None or False"
+            )
+        return stages.loaded_frfs(self.spec, case, freqs)

@@ -1,0 +1,95 @@
+"""Cached stages of the loaded FE tire (``[tire] model = "loaded-fe"``).
+
+======================  ===========================================================================
+stage                   caches
+======================  ===========================================================================
+:func:`loaded_state`    mount, inflation (:func:`.statics.inflate`) and the nonlinear loading to the
+                        case's load (:func:`.loading.load_on_flat_road`)
+:func:`loaded_footprint`  the state as every model's footprint (:func:`.footprint.loaded_footprint`)
+:func:`loaded_frfs`     the dynamics linearised about it, reduced and swept
+                        (:func:`.dynamics.footprint_frf`), on the footprint's tasselli
+======================  ===========================================================================
+
+:func:`built_tire` (the swept mesh and its integration points: about a second) is not cached.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...repro.cache import cached
+from ..model import DEFAULT_FREQS, Footprint, FRFResult, LoadCase
+from . import dynamics, footprint, loading, statics
+from .mesh import graded_arcs
+from .spec import LoadedSpec
+from .statics import LoadedTire, StaticState
+
+
+def built_tire(spec: LoadedSpec) -> LoadedTire:
+    """The construction swept through the solid mesh's graded arcs (not cached)."""
+    m = spec.solid_mesh
+    radius = spec.construction.geometry.outer_radius
+    arcs = graded_arcs(radius, m.footprint_arc, m.sector_half_angle, m.coarse_arc, m.arc_growth)
+    return statics.build_loaded_tire(spec.construction, arcs)
+
+
+def _flat(case: LoadCase) -> LoadCase:
+    """Refuse a drum: the loaded FE tire's contact is with the flat road."""
+    if case.road.kind != "flat":
+        raise ValueError(
+            f"case = {case.describe()}: the loaded FE tire is loaded on the flat road only (its one-sided "
+            "contact holds tread nodes on a plane); valid roads are 'flat'"
+        )
+    return case
+
+
+def loaded_state(spec: LoadedSpec, case: LoadCase) -> StaticState:
+    """Cached: the tire inflated to its file's pressure and loaded on the flat road to ``case.load`` (N)."""
+    inputs = {"tire": spec, **_flat(case).key()}
+
+    def compute() -> StaticState:
+        tire = built_tire(spec)
+        inflated = statics.inflate(tire)
+        return loading.load_on_flat_road(tire, inflated, case.load, spec.solid_mesh.road_step)
+
+    return cached(loaded_state, inputs, compute, runs=(loading, statics))
+
+
+def loaded_footprint(spec: LoadedSpec, case: LoadCase) -> Footprint:
+    """Cached :func:`.footprint.loaded_footprint` of :func:`loaded_state` (the tangent K_v's solve included)."""
+    state = loaded_state(spec, case)
+    inputs = {"tire": spec, **case.key()}
+    return cached(
+        loaded_footprint,
+        inputs,
+        lambda: footprint.loaded_footprint(built_tire(spec), state, case.load),
+        runs=(footprint, loading, statics),
+    )
+
+
+def loaded_frfs(spec: LoadedSpec, case: LoadCase, freqs: np.ndarray | None = None) -> FRFResult:
+    """Cached fixed-hub FRFs about :func:`loaded_state` at ``freqs`` (Hz; default 0-400 Hz every 1 Hz):
+    linearised (:func:`.dynamics.linearise`), reduced for ``max(freqs)`` (:func:`.dynamics.reduce`)
+    and swept, on the tasselli of :func:`loaded_footprint`."""
+    freqs = DEFAULT_FREQS if freqs is None else np.asarray(freqs, dtype=float)
+    if not np.array_equal(freqs, DEFAULT_FREQS) and np.all(np.isin(freqs, DEFAULT_FREQS)):
+        full = loaded_frfs(spec, case)
+        pick = np.searchsorted(full.freqs, freqs)
+        return FRFResult(
+            freqs=full.freqs[pick],
+            H=full.H[:, pick],
+            H_tot=full.H_tot[pick],
+            G_H=full.G_H[pick],
+            H_points=full.H_points[:, pick],
+            method=full.method,
+        )
+    state = loaded_state(spec, case)
+    tasselli = loaded_footprint(spec, case).tasselli
+
+    def compute() -> FRFResult:
+        linearised = dynamics.linearise(built_tire(spec), state)
+        frf = dynamics.footprint_frf(linearised, freqs)
+        return footprint.frf_result(frf, tasselli)
+
+    inputs = {"tire": spec, **case.key(), "freqs": freqs}
+    return cached(loaded_frfs, inputs, compute, runs=(dynamics, footprint, loading, statics))

@@ -1,0 +1,95 @@
+"""The loaded FE tire through the tire-model interface (``[tire] model = "loaded-fe"``), on the test mesh.
+
+Its load case is carried exactly by a minimum of the potential reached the same whichever path the
+load takes; a load it cannot carry, a drum and sticking contact are refused by name; its tire file
+is validated like every other; and the RM chain runs on it: the quarter car built on the model is
+the one built on its FRFs written to files and read back.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import roadnoise_utils as ru
+from roadnoise_utils.tire.loaded import loading, statics
+from roadnoise_utils.tire.loaded.spec import from_dict
+from roadnoise_utils.tire.model import NotApplicable
+
+
+def test_the_load_case_is_carried_by_a_minimum_whatever_path_the_load_takes(small_loaded, model_tire, model_state):
+    tire, loaded = model_tire, model_state
+    footprint = small_loaded.load(small_loaded.case())
+    assert abs(loaded.road_force / small_loaded.default_load - 1) < loading.LOAD_TOLERANCE and loaded.stable
+    assert footprint.force_balance() < 1e-9 and footprint.deflection == loaded.road_lift
+    inflated = statics.inflate(tire)
+    direct = statics.press_on_flat_road(tire, inflated, loaded.road_lift, steps=3)  # straight to the landed lift
+    assert np.array_equal(direct.contact, loaded.contact)
+    assert np.abs(direct.u - loaded.u).max() < 1e-8 * np.abs(loaded.u).max()
+
+
+def test_a_load_the_tire_cannot_carry_is_refused_naming_the_load(tire):
+    soft = statics.inflate(tire, 0.5e5)
+    with pytest.raises(ValueError, match=r"load = 15000 N: the tire carries at most \d+ N before the road reaches"):
+        loading.load_on_flat_road(tire, soft, 15000.0, 0.02)
+    with pytest.raises(ValueError, match="road_step"):
+        loading.load_on_flat_road(tire, soft, 1000.0, 0.0)
+    with pytest.raises(ValueError, match="load"):
+        loading.load_on_flat_road(tire, soft, 100.0, 0.001)
+
+
+def test_a_drum_sticking_contact_and_what_it_lacks_are_refused_by_name(small_loaded, model_tire):
+    with pytest.raises(ValueError, match="flat road only"):
+        small_loaded.load(small_loaded.case("drum", drum_radius=1.25))
+    with pytest.raises(ValueError, match="stick = True"):
+        small_loaded.fixed_hub_frfs(small_loaded.case(), stick=True)
+    for capability in ("cavity", "modal_reduction", "one_sided_cleat", "released_hub"):
+        assert not small_loaded.has(capability)
+        with pytest.raises(NotApplicable, match=capability):
+            small_loaded.require(capability)
+    assert small_loaded.equivalent_dof() == model_tire.n_dof == 4080
+
+
+@pytest.mark.parametrize(
+    "edit, message",
+    [
+        (lambda d: d["solid_mesh"].update(footprint_arc=0.5), r"footprint_arc = 0.5 m is outside"),
+        (lambda d: d["solid_mesh"].update(arcs=6), r"unknown parameter\(s\) \['arcs'\]"),
+        (lambda d: d["solid_mesh"].update(crown_elements=3), "crown_elements = 3 must be even"),
+        (lambda d: d["construction"].update(file="165_65R14.toml"), "is a 'ring' tire file"),
+        (lambda d: d["construction"].update(file="nowhere.toml"), "no such file"),
+        (lambda d: d.pop("solid_mesh"), r"missing section\(s\) \['\[solid_mesh\]'\]"),
+    ],
+)
+def test_a_bad_tire_file_is_refused_naming_the_value(edit, message):
+    path = ru.repro.paths.data_file("165_65R14_loaded", "tires", "tire file")
+    data = ru.repro.paths.read_toml(path)
+    edit(data)
+    with pytest.raises(ValueError, match=message):
+        from_dict(data, source=path.name, folder=path.parent)
+
+
+def test_replace_reaches_the_construction_and_the_solid_mesh(small_loaded):
+    spec = small_loaded.spec.replace(**{"layers.tread.youngs_modulus": 6e6, "solid_mesh.road_step": 0.001})
+    assert spec.construction.layers["tread"].youngs_modulus == 6e6 and spec.solid_mesh.road_step == 0.001
+    assert spec.construction.mesh.crown_elements == spec.solid_mesh.crown_elements == 4
+    with pytest.raises(KeyError, match="solid_mesh.arcs"):
+        small_loaded.spec.replace(**{"solid_mesh.arcs": 6})
+
+
+def test_the_quarter_car_runs_on_it_and_on_its_frfs_written_to_files(small_loaded, tmp_path):
+    """The chain's fits, state space and corner on the model, and on its FRFs and footprint written
+    as a tire from files and read back (binary UFF 58: exact): the same spectra to 1e-9."""
+    files = ru.export_frf_files(small_loaded, tmp_path, [small_loaded.case()], "loaded")
+    on_model = ru.experiments.corner_setup(tire=small_loaded)
+    on_files = ru.experiments.corner_setup(tire=str(files))
+    frfs = small_loaded.fixed_hub_frfs(small_loaded.case())
+    band = (frfs.freqs > 0) & (frfs.freqs <= 250.0)  # the fits' band (Eq. 1, the paper's 0-250 Hz)
+    fitted = on_model.fits.responses(frfs.freqs[band]).sum(axis=0)
+    assert np.abs(fitted - frfs.H_tot[band]).max() < 0.02 * np.abs(frfs.H_tot[band]).max()
+    freqs = np.linspace(2.0, 250.0, 125)
+    spectrum, speed = ru.textures.load_texture("rough"), 120 / 3.6
+    a, b = on_model.predicted(freqs, spectrum, speed), on_files.predicted(freqs, spectrum, speed)
+    for name in a:
+        assert np.all(np.isfinite(a[name])) and a[name].max() > 0
+        assert np.abs(b[name] - a[name]).max() <= 1e-9 * np.abs(a[name]).max(), name
