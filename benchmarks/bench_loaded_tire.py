@@ -21,7 +21,7 @@ the swept solids take arcs of ``--arcs`` (m) over the footprint sector (+-0.28 r
    linearised tire's force at the same lift, the time, the least acoustic eigenvalue over the
    points (negative where a layer's law has lost strong ellipticity:
    :func:`roadnoise_utils.tire.loaded.solid.ellipticity`), and whether the state is a minimum of
-   the potential or a saddle (:func:`roadnoise_utils.tire.loaded.statics.is_stable`).
+   the potential or a saddle (:func:`roadnoise_utils.tire.loaded.road_contact.is_stable`).
 
 4. the dynamics about the loaded state at the file's load (``--no-dynamics`` skips it): the
    linearisation, the reduced basis and the footprint FRFs 0-400 Hz every 1 Hz (times, modes),
@@ -52,7 +52,7 @@ from roadnoise_utils.tire.banded import BandedCholesky
 from roadnoise_utils.tire.cross_section import static as section_static
 from roadnoise_utils.tire.cross_section.checks import harmonic_frequencies
 from roadnoise_utils.tire.cross_section.operators import harmonic_operators
-from roadnoise_utils.tire.loaded import dynamics, footprint, linearised, solid, statics
+from roadnoise_utils.tire.loaded import dynamics, footprint, linearised, road_contact, solid, statics
 from roadnoise_utils.tire.loaded.mesh import graded_arcs
 from roadnoise_utils.tire.model import tire_model
 
@@ -149,9 +149,9 @@ def load_nonlinear(tire, inflated, compliance, load: float, step: float) -> stat
         t0 = time.perf_counter()
         with warnings.catch_warnings():  # a saddle is reported in the table
             warnings.simplefilter("ignore", RoadnoiseWarning)
-            state = statics.press_on_flat_road(tire, inflated, lift, steps=1, start=state)
+            state = road_contact.press_on_road(tire, inflated, lift, steps=1, start=state)
         seconds = time.perf_counter() - t0
-        k_v = statics.vertical_stiffness(tire, state)
+        k_v = road_contact.vertical_stiffness(tire, state)
         length, width = footprint_size(tire, state)
         linear = linearised.flat_road_at_lift(compliance, lift).load
         acoustic = min(float(v.min()) for v in solid.ellipticity(tire.groups, state.u))
@@ -161,8 +161,8 @@ def load_nonlinear(tire, inflated, compliance, load: float, step: float) -> stat
             flush=True,
         )
     print(f"  loaded to {state.road_force:.0f} N in {time.perf_counter() - t_total:.0f} s")
-    lift += (load - state.road_force) / statics.vertical_stiffness(tire, state)  # one step back to the load
-    state = statics.press_on_flat_road(tire, inflated, lift, steps=1, start=state)
+    lift += (load - state.road_force) / road_contact.vertical_stiffness(tire, state)  # one step back to the load
+    state = road_contact.press_on_road(tire, inflated, lift, steps=1, start=state)
     print(f"  at the load: {state.road_force:.0f} N at {lift * 1e3:.2f} mm, a minimum: {state.stable}")
     return state
 

@@ -1,6 +1,6 @@
 """Dynamics of the loaded tire linearised about its static state: the paper's FET in the frequency domain.
 
-About a loaded equilibrium ``u0`` (:func:`.statics.press_on_flat_road`) a small motion
+About a loaded equilibrium ``u0`` (:func:`.road_contact.press_on_road`) a small motion
 ``u e^{i omega t}`` meets the dynamic stiffness
 
 .. math:: D(\\omega) = \\sum_c g_c(\\omega)\\,K_c + g_p(\\omega)\\,K_p - \\omega^2 M,
@@ -13,10 +13,10 @@ stiffness, scaled like the waveguide's pneumatic stiffness (by the file's ``[pne
 compound``, or not at all), and ``M`` the consistent mass. At zero frequency, with every ratio 1,
 ``D`` is the static tangent of :func:`.statics.residual_and_tangent`: the loaded state's.
 
-The footprint's contact nodes follow the road vertically, held there and free along it
-(bilateral and frictionless, the contact set frozen: the paper's linearisation and the other
-tire models'), and the rim is rigid and held. A vertical road displacement ``d_p`` of contact node
-``p`` gives the force on the hub :math:`h_p(\\omega)\\,d_p`; the nodes of a tassello together
+The footprint's contact nodes follow the road along its normal (vertical on the flat road,
+radial on a drum), held there and free along it (bilateral and frictionless, the contact set
+frozen: the paper's linearisation and the other tire models'), and the rim is rigid and held. A
+vertical road displacement ``d_p`` under contact node ``p`` gives the force on the hub :math:`h_p(\\omega)\\,d_p`; the nodes of a tassello together
 give its ``H_i``, all of them ``H_tot``; a unit vertical rim motion with the contact held gives
 ``G_H`` (``-K_v`` at rest).
 """
@@ -31,8 +31,8 @@ import scipy.sparse.linalg as spla
 
 from ... import guards
 from ..banded import BandedCholesky, banded_sum
-from . import pressure, solid
-from .statics import LoadedTire, StaticState, held_dof
+from . import pressure, road_contact, solid
+from .statics import LoadedTire, StaticState
 
 
 @dataclass(frozen=True, eq=False)
@@ -52,12 +52,24 @@ class LinearisedTire:
     pneumatic_law : str or None
         The compound whose law scales ``pneumatic``; None: lossless.
     road : ndarray of int
-        The vertical DOF of the contact nodes (the road's inputs).
+        The held DOF of the contact nodes (the road's inputs): vertical on the flat road, along the
+        drum's normal on a drum (the DOF are then in the contact's frame).
+    road_vertical : ndarray
+        The vertical component of each contact node's normal (1 on the flat road): a unit vertical
+        road motion under the node moves it by that much along its held DOF.
     hub : ndarray of int
         The vertical DOF of the rim's nodes (they move together with the hub).
     free : ndarray of int
         DOF neither on the rim nor held by the road.
     state : StaticState
+    curvature : csr_matrix
+        The drum's curvature term (N/m): ``-lambda / R`` on each contact node's tangent DOF, lossless
+        (zero on the flat road).
+    road_slide : csc_matrix (n_dof, P + 1)
+        Minus each boundary motion's slide of the drum's surface along a node's tangent: the road
+        under a contact node moved up by one moves the drum's surface there ``-n_x`` along the
+        node's tangent, and the curvature term acts on the node's slide relative to it (zero on the
+        flat road and for the hub).
     """
 
     compounds: dict
@@ -66,14 +78,30 @@ class LinearisedTire:
     laws: dict
     pneumatic_law: str | None
     road: np.ndarray
+    road_vertical: np.ndarray
     hub: np.ndarray
     free: np.ndarray
     state: StaticState
+    curvature: sp.csr_matrix
+    road_slide: sp.csc_matrix
+
+    def parts(self) -> list[sp.csr_matrix]:
+        """The stiffness parts and the mass, in the order of :func:`_weights`."""
+        return [self.pneumatic, *self.compounds.values(), self.mass, self.curvature]
+
+    def weights(self, omega: float) -> np.ndarray:
+        """The weight of each of :meth:`parts` at ``omega`` (rad/s)."""
+        return _weights(self.laws, self.pneumatic_law, list(self.compounds), omega)
+
+    def boundaries(self) -> list[sp.csc_matrix]:
+        """Each part's boundary motions: :func:`_boundary_columns`, the curvature's with the drum's slide."""
+        boundary = _boundary_columns(self)
+        return [boundary] * (len(self.compounds) + 2) + [(boundary + self.road_slide).tocsc()]
 
     def stiffness(self, omega: float) -> sp.csr_matrix:
-        """:math:`\\sum_c g_c K_c + g_p K_p` at ``omega`` (rad/s), complex (N/m)."""
-        weights = _weights(self.laws, self.pneumatic_law, list(self.compounds), omega)[:-1]
-        return sum(w * part for w, part in zip(weights, [self.pneumatic, *self.compounds.values()])).tocsr()
+        """:math:`\\sum_c g_c K_c + g_p K_p` and the curvature term at ``omega`` (rad/s), complex (N/m)."""
+        weights = self.weights(omega)
+        return sum(w * part for w, part in zip(weights, self.parts()) if part is not self.mass).tocsr()
 
 
 def tangent_parts(tire: LoadedTire, u: np.ndarray, p: float) -> tuple[dict, sp.csr_matrix]:
@@ -104,12 +132,32 @@ def tangent_parts(tire: LoadedTire, u: np.ndarray, p: float) -> tuple[dict, sp.c
 
 
 def linearise(tire: LoadedTire, state: StaticState) -> LinearisedTire:
-    """The loaded tire about ``state``, contact set frozen: its stiffness parts, mass and DOF sets."""
-    if state.contact.size == 0:
-        raise ValueError("state: the tire touches no road (give a loaded state: statics.press_on_flat_road)")
+    """The loaded tire about ``state``, contact set frozen: its stiffness parts, mass and DOF sets.
+
+    On a drum each contact node's ``x``/``z`` pair is turned into its tangent and normal DOF (the
+    contact's frame, :class:`.road_contact.RoadContact`), the normal held, and the contact forces'
+    curvature term is a part of its own, lossless (the drum is rigid). The road under a node
+    moved up by one moves the node ``n_z`` along its normal and the drum's surface ``-n_x`` along
+    its tangent: the curvature term acts on the node's slide relative to the drum (the mixed
+    derivative of the constraint), so a rigid motion of tire and drum together gives no force.
+    """
+    contact = road_contact.contact_of(tire, state)
     compounds, pneumatic = tangent_parts(tire, state.u, state.pressure)
     spec = tire.spec
     mass = solid.mass_matrix(solid.element_groups(tire.mesh, spec, arc_points=3), tire.n_dof)
+    _, normals = contact.gaps_and_normals(state.contact, state.u)
+    frame = contact.frame(normals)
+    road = 3 * np.asarray(state.contact, int) + 2
+    n_dof, n_road = tire.n_dof, road.size
+    curvature = sp.csr_matrix((n_dof, n_dof))
+    slide = sp.csc_matrix((n_dof, n_road + 1))
+    if frame is not None:
+        compounds = {name: (frame.T @ part @ frame).tocsr() for name, part in compounds.items()}
+        pneumatic = (frame.T @ pneumatic @ frame).tocsr()
+        mass = (frame.T @ mass @ frame).tocsr()
+        force = (frame.T @ state.reactions)[road]
+        curvature = sp.csr_matrix((-force / state.road.drum_radius, (road - 2, road - 2)), shape=(n_dof, n_dof))
+        slide = sp.csc_matrix((normals[:, 0], (road - 2, np.arange(n_road))), shape=(n_dof, n_road + 1))
     rim_nodes = np.unique(tire.fixed // 3)
     return LinearisedTire(
         compounds=compounds,
@@ -117,10 +165,13 @@ def linearise(tire: LoadedTire, state: StaticState) -> LinearisedTire:
         mass=mass,
         laws=spec.laws(),
         pneumatic_law=spec.pneumatic,
-        road=3 * np.asarray(state.contact, int) + 2,
+        road=road,
+        road_vertical=normals[:, 1].copy(),
         hub=3 * rim_nodes + 2,
-        free=np.setdiff1d(np.arange(tire.n_dof), held_dof(tire, state.contact)),
+        free=np.setdiff1d(np.arange(n_dof), np.concatenate([tire.fixed, road])),
         state=state,
+        curvature=curvature,
+        road_slide=slide,
     )
 
 
@@ -161,16 +212,15 @@ def footprint_frf_direct(linearised: LinearisedTire, freqs: np.ndarray) -> Loade
     """
     freqs = _check_freqs(freqs)
     lin = linearised
-    boundary = _boundary_columns(lin)
-    parts = [lin.pneumatic, *lin.compounds.values(), lin.mass]
+    parts = lin.parts()
     free_parts = [part[lin.free][:, lin.free] for part in parts]
-    coupling = [(part[lin.free] @ boundary).toarray() for part in parts]
-    hub_rows = [(part[lin.hub] @ boundary).toarray().sum(axis=0) for part in parts]
+    coupling = [(part[lin.free] @ boundary).toarray() for part, boundary in zip(parts, lin.boundaries())]
+    hub_rows = [(part[lin.hub] @ boundary).toarray().sum(axis=0) for part, boundary in zip(parts, lin.boundaries())]
     hub_free = [np.asarray(part[lin.hub][:, lin.free].sum(axis=0)).ravel() for part in parts]
     banded = banded_sum(free_parts)
     out = []
     for frequency in freqs:
-        w = _weights(lin.laws, lin.pneumatic_law, list(lin.compounds), 2 * np.pi * frequency)
+        w = lin.weights(2 * np.pi * frequency)
         rhs = -sum(wj * c for wj, c in zip(w, coupling))
         if banded is not None:
             u_free = banded.lu(w).solve(rhs)
@@ -183,9 +233,11 @@ def footprint_frf_direct(linearised: LinearisedTire, freqs: np.ndarray) -> Loade
 
 
 def _weights(laws: dict, pneumatic_law: str | None, compounds: list, omega: float) -> np.ndarray:
-    """The parts' weights at ``omega``: the pneumatic part's ratio, each compound's, then ``-omega^2`` (mass)."""
+    """The parts' weights at ``omega``: the pneumatic part's ratio, each compound's, ``-omega^2`` (mass),
+    then 1 (the drum's curvature term)."""
     return np.array(
-        [_ratio(laws, pneumatic_law, omega), *(_ratio(laws, name, omega) for name in compounds), -(omega**2)], complex
+        [_ratio(laws, pneumatic_law, omega), *(_ratio(laws, name, omega) for name in compounds), -(omega**2), 1.0],
+        complex,
     )
 
 
@@ -217,7 +269,7 @@ class ReducedFootprint:
     ----------
     compounds : dict of str to ndarray (r, r)
         Each compound's projected material tangent.
-    pneumatic, mass : ndarray (r, r)
+    pneumatic, mass, curvature : ndarray (r, r)
     n_boundary : int
         The first ``n_boundary`` coordinates are the boundary's motions (the contact nodes', the hub's).
     n_modes : int
@@ -229,6 +281,7 @@ class ReducedFootprint:
     compounds: dict
     pneumatic: np.ndarray
     mass: np.ndarray
+    curvature: np.ndarray
     n_boundary: int
     n_modes: int
     laws: dict
@@ -237,7 +290,8 @@ class ReducedFootprint:
     def boundary_stiffness(self, omega: float) -> np.ndarray:
         """The boundary's condensed dynamic stiffness at ``omega`` (rad/s), (n_boundary, n_boundary) complex."""
         weights = _weights(self.laws, self.pneumatic_law, list(self.compounds), omega)
-        d = sum(w * part for w, part in zip(weights, [self.pneumatic, *self.compounds.values(), self.mass]))
+        parts = [self.pneumatic, *self.compounds.values(), self.mass, self.curvature]
+        d = sum(w * part for w, part in zip(weights, parts))
         b = self.n_boundary
         return d[:b, :b] - d[:b, b:] @ np.linalg.solve(d[b:, b:], d[b:, :b])
 
@@ -265,16 +319,17 @@ def reduce(linearised: LinearisedTire, f_max: float, cutoff_factor: float = CUTO
     cutoff_factor = guards.real("cutoff_factor", cutoff_factor, lo=1.0, unit="")
     rest = lin.stiffness(0.0).real.tocsr()
     boundary = _boundary_columns(lin)
+    slide_load = (lin.curvature[lin.free] @ lin.road_slide).toarray()  # the drum's slide on the curvature term
     mass_ff = lin.mass[lin.free][:, lin.free].tocsc()
     factor = _factor(rest[lin.free][:, lin.free])
     shapes = boundary.toarray()
-    shapes[lin.free] = -factor.solve((rest[lin.free] @ boundary).toarray())
+    shapes[lin.free] = -factor.solve((rest[lin.free] @ boundary).toarray() + slide_load)
     omega_cut = 2 * np.pi * cutoff_factor * f_max
     modes = _modes_below(rest[lin.free][:, lin.free], mass_ff, factor, omega_cut)
     stiff = lin.stiffness(2 * np.pi * f_max).real.tocsr()
     stiff_factor = _factor(stiff[lin.free][:, lin.free])
     stiff_modes = _modes_below(stiff[lin.free][:, lin.free], mass_ff, stiff_factor, omega_cut)
-    stiff_shapes = -stiff_factor.solve((stiff[lin.free] @ boundary).toarray())
+    stiff_shapes = -stiff_factor.solve((stiff[lin.free] @ boundary).toarray() + slide_load)
     inertia = -factor.solve(lin.mass[lin.free] @ shapes)
     interior = _mass_orthonormal(
         np.hstack([modes, stiff_modes, stiff_shapes - shapes[lin.free], inertia]), mass_ff, keep=modes.shape[1]
@@ -284,14 +339,17 @@ def reduce(linearised: LinearisedTire, f_max: float, cutoff_factor: float = CUTO
     basis[:, :n_b] = shapes
     basis[np.ix_(lin.free, np.arange(n_b, basis.shape[1]))] = interior
 
-    def project(matrix: sp.spmatrix) -> np.ndarray:
-        out = basis.T @ (matrix @ basis)
+    def project(matrix: sp.spmatrix, on: np.ndarray = basis) -> np.ndarray:
+        out = on.T @ (matrix @ on)
         return 0.5 * (out + out.T)
 
+    slid = basis.copy()
+    slid[:, :n_b] += lin.road_slide.toarray()
     return ReducedFootprint(
         compounds={name: project(part) for name, part in lin.compounds.items()},
         pneumatic=project(lin.pneumatic),
         mass=project(lin.mass),
+        curvature=project(lin.curvature, slid),
         n_boundary=n_b,
         n_modes=modes.shape[1],
         laws=lin.laws,
@@ -300,11 +358,13 @@ def reduce(linearised: LinearisedTire, f_max: float, cutoff_factor: float = CUTO
 
 
 def _boundary_columns(lin: LinearisedTire) -> sp.csc_matrix:
-    """Unit motions (n_dof, P + 1): each contact node's vertical DOF, then every rim node's together."""
+    """Unit motions (n_dof, P + 1): the road under each contact node moved up by one (its held DOF by
+    the normal's vertical component), then every rim node's vertical DOF together."""
     n_dof, n_road = lin.mass.shape[0], lin.road.size
     rows = np.concatenate([lin.road, lin.hub])
     cols = np.concatenate([np.arange(n_road), np.full(lin.hub.size, n_road)])
-    return sp.csc_matrix((np.ones(rows.size), (rows, cols)), shape=(n_dof, n_road + 1))
+    values = np.concatenate([lin.road_vertical, np.ones(lin.hub.size)])
+    return sp.csc_matrix((values, (rows, cols)), shape=(n_dof, n_road + 1))
 
 
 def _factor(stiffness: sp.spmatrix):

@@ -1,6 +1,6 @@
 """The loaded FE tire's own footprint in tasselli, and its FRFs in the form every tire model gives.
 
-The contact nodes of a loaded state (:func:`.statics.press_on_flat_road`) lie on the tread's rings
+The contact nodes of a loaded state (:func:`.road_contact.press_on_road`) lie on the tread's rings
 (one per node row around the circumference) and its columns (the section's tread nodes across
 the width). Each node sits where the loading put it on the road: its deformed ``x`` (along the
 road) and ``y``; the distance to the neighbouring rings' nodes of its column along ``x``, and half
@@ -17,10 +17,11 @@ import dataclasses
 
 import numpy as np
 
-from ..model import Footprint, FRFResult, LoadCase
+from ..model import Footprint, FRFResult
 from ..tasselli import Tasselli, tassellate
 from .dynamics import LoadedFootprintFRF
-from .statics import LoadedTire, StaticState, vertical_stiffness
+from .road_contact import vertical_stiffness
+from .statics import LoadedTire, StaticState
 
 
 def contact_grid(tire: LoadedTire, state: StaticState) -> tuple[np.ndarray, np.ndarray]:
@@ -39,7 +40,7 @@ def loaded_tasselli(tire: LoadedTire, state: StaticState, areas: np.ndarray | No
     tassello by the integral of its shape function over the tread (``areas``, m^2, if computed
     already: :func:`shape_function_areas`)."""
     if state.contact.size == 0:
-        raise ValueError("state: the tire touches no road (give a loaded state: statics.press_on_flat_road)")
+        raise ValueError("state: the tire touches no road (give a loaded state: road_contact.press_on_road)")
     ring, column = contact_grid(tire, state)
     position = tire.mesh.coordinates + state.u.reshape(-1, 3)
     tread = tire.tread.reshape(tire.mesh.theta.size, -1)
@@ -111,7 +112,7 @@ def shape_function_areas(tire: LoadedTire, state: StaticState) -> np.ndarray:
 
 
 def loaded_footprint(tire: LoadedTire, state: StaticState, load: float | None = None) -> Footprint:
-    """The loaded state as every model's :class:`~roadnoise_utils.tire.model.Footprint` on the flat road.
+    """The loaded state as every model's :class:`~roadnoise_utils.tire.model.Footprint` on its road.
 
     The deflection is the road's lift from touching the inflated tire; the contact pressure at a
     node is its road reaction over its shape function's area (the pressure a uniform field would
@@ -123,7 +124,7 @@ def loaded_footprint(tire: LoadedTire, state: StaticState, load: float | None = 
     tasselli = loaded_tasselli(tire, state, areas)
     load = state.road_force if load is None else float(load)
     return Footprint(
-        road=LoadCase.of("flat", load).road,
+        road=state.road,
         load=load,
         deflection=state.road_lift,
         hub_force=float(-state.reactions[tire.fixed[tire.fixed % 3 == 2]].sum()),

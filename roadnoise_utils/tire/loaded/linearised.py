@@ -6,7 +6,7 @@ pressure's load stiffness, :func:`.statics.residual_and_tangent`) stays the tire
 however far the road presses. Condensed on the tread nodes near the road, its inverse is the
 vertical compliance the waveguide tire gives for its contact grid, and the same frictionless
 one-sided contact (:func:`roadnoise_utils.tire.active_set.active_set`) solves the flat road on
-both. The nonlinear loaded state (:func:`.statics.press_on_flat_road`) differs from this one by
+both. The nonlinear loaded state (:func:`.road_contact.press_on_road`) differs from this one by
 the loading's geometric nonlinearity alone, and tends to it as the road's lift tends to zero.
 
 The waveguide tire linearises once more: about the round, unstressed tire, with the stress of its
@@ -30,7 +30,8 @@ from ... import guards
 from ..active_set import active_set, held_contact
 from ..banded import BandedCholesky
 from . import pressure, solid
-from .statics import LoadedTire, StaticState, residual_and_tangent, tread_heights
+from .road_contact import tread_heights
+from .statics import LoadedTire, StaticState, residual_and_tangent
 
 #: Default depth (m) of the band of tread nodes above the lowest that may touch the road.
 CONTACT_DEPTH = 0.05

@@ -1,7 +1,7 @@
 """The inflated tire loaded to a vertical load: road steps up to the load, then the lift that carries it.
 
-The statics (:mod:`.statics`) press the road a given lift into the tire; a load case gives a
-force. :func:`load_on_flat_road` raises the road in steps of ``road_step`` until the road's force
+The road contact (:mod:`.road_contact`) presses the road a given lift into the tire; a load case
+gives a force. :func:`load_on_road` raises the road in steps of ``road_step`` until the road's force
 passes the load, then finds the lift that carries it exactly by Brent's method, which keeps the
 root bracketed, each solve starting from the nearest equilibrium. A load the tire cannot carry before the road reaches the rim, a step the
 Newton iterations cannot follow and a lift that will not settle are refused by name.
@@ -15,7 +15,9 @@ from scipy.optimize import brentq
 
 from ... import guards
 from ...guards import RoadnoiseWarning
-from . import statics
+from ..surface import RoadSurface
+from . import road_contact
+from .road_contact import FLAT
 from .statics import LoadedTire, StaticState
 
 #: The road's force must equal the load to this fraction (0.5 uN at 4.5 kN): below the footprint's force
@@ -25,8 +27,10 @@ LOAD_TOLERANCE = 1e-10
 MAX_LANDING_ITERATIONS = 20
 
 
-def load_on_flat_road(tire: LoadedTire, inflated: StaticState, load: float, road_step: float) -> StaticState:
-    """The inflated tire pressed on the flat road until the road carries ``load`` (N).
+def load_on_road(
+    tire: LoadedTire, inflated: StaticState, load: float, road_step: float, road: RoadSurface = FLAT
+) -> StaticState:
+    """The inflated tire pressed on ``road`` (the flat road or a drum) until the road carries ``load`` (N).
 
     Parameters
     ----------
@@ -36,6 +40,8 @@ def load_on_flat_road(tire: LoadedTire, inflated: StaticState, load: float, road
         Vertical load (N), within :data:`roadnoise_utils.guards.LOAD_RANGE`.
     road_step : float
         Road lift per load step (m): the steps the Newton iterations follow.
+    road : RoadSurface
+        The flat road (default) or a drum.
 
     Returns
     -------
@@ -54,22 +60,28 @@ def load_on_flat_road(tire: LoadedTire, inflated: StaticState, load: float, road
     road_step = guards.real("road_step", road_step, 0.0, 0.05, lo_open=True, unit="m")
     below, above = inflated, None
     while above is None:
-        state = _pressed(tire, inflated, below.road_lift + road_step, below, load, road_step)
+        state = _pressed(tire, inflated, below.road_lift + road_step, below, load, road_step, road)
         if state.road_force >= load:
             above = state
         else:
             below = state
-    return _land(tire, inflated, load, below, above, road_step)
+    return _land(tire, inflated, load, below, above, road_step, road)
 
 
 def _pressed(
-    tire: LoadedTire, inflated: StaticState, lift: float, start: StaticState, load: float, road_step: float
+    tire: LoadedTire,
+    inflated: StaticState,
+    lift: float,
+    start: StaticState,
+    load: float,
+    road_step: float,
+    road: RoadSurface,
 ) -> StaticState:
     """One road position from ``start``; the statics' errors restated in terms of the load case."""
     try:
         with warnings.catch_warnings():  # only the final state's stability is reported
             warnings.simplefilter("ignore", RoadnoiseWarning)
-            return statics.press_on_flat_road(tire, inflated, lift, steps=1, start=start)
+            return road_contact.press_on_road(tire, inflated, lift, road, steps=1, start=start)
     except ValueError as exc:
         if "the tire bottoms" not in str(exc):
             raise
@@ -90,7 +102,13 @@ class _Landed(Exception):
 
 
 def _land(
-    tire: LoadedTire, inflated: StaticState, load: float, below: StaticState, above: StaticState, road_step: float
+    tire: LoadedTire,
+    inflated: StaticState,
+    load: float,
+    below: StaticState,
+    above: StaticState,
+    road_step: float,
+    road: RoadSurface,
 ) -> StaticState:
     """The state between the bracket ``below``/``above`` whose road force is ``load``: Brent's method on
     the lift (:func:`scipy.optimize.brentq`), each solve starting from the nearest equilibrium found,
@@ -100,7 +118,7 @@ def _land(
     def miss(lift: float) -> float:
         if lift not in states:
             nearest = states[min(states, key=lambda known: abs(known - lift))]
-            states[lift] = _pressed(tire, inflated, lift, nearest, load, road_step)
+            states[lift] = _pressed(tire, inflated, lift, nearest, load, road_step, road)
         value = states[lift].road_force - load
         if abs(value) <= LOAD_TOLERANCE * load:
             raise _Landed

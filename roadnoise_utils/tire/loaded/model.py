@@ -3,8 +3,9 @@
 The paper's own kind of FE tire: the construction swept into 3-D solids, mounted, inflated and
 pressed on the road by large-deformation statics, its dynamics linearised about that loaded
 state. Its stages are cached by :mod:`.stages`; this class answers the pipeline's calls with them.
-Its contact is with the flat road; the drum, the one-sided cleat, the modal reduction and the air
-cavity are not part of it (:meth:`~roadnoise_utils.tire.model.TireModel.require` says so).
+It stands on the flat road or a drum (frictionless one-sided contact); the one-sided cleat, the
+modal reduction and the air cavity are not part of it
+(:meth:`~roadnoise_utils.tire.model.TireModel.require` says so).
 """
 
 from __future__ import annotations
@@ -15,7 +16,7 @@ from typing import Any
 import numpy as np
 
 from ..model import Footprint, FRFResult, LoadCase, TireModel, register
-from . import dynamics, loading, stages, statics
+from . import dynamics, loading, road_contact, stages, statics
 from .spec import LoadedSpec, from_dict
 
 
@@ -46,10 +47,10 @@ class LoadedFEModel(TireModel):
         return 0.0
 
     def frf_runs(self) -> tuple:
-        return (dynamics, loading, statics)
+        return (dynamics, loading, road_contact, statics)
 
     def load(self, case: LoadCase) -> Footprint:
-        """:func:`.stages.loaded_footprint` (cached): the loaded state on the flat road."""
+        """:func:`.stages.loaded_footprint` (cached): the loaded state on the case's road."""
         return stages.loaded_footprint(self.spec, case)
 
     def fixed_hub_frfs(

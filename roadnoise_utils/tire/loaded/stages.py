@@ -4,7 +4,7 @@
 stage                   caches
 ======================  ===========================================================================
 :func:`loaded_state`    mount, inflation (:func:`.statics.inflate`) and the nonlinear loading to the
-                        case's load (:func:`.loading.load_on_flat_road`)
+                        case's load on its road (:func:`.loading.load_on_road`)
 :func:`loaded_footprint`  the state as every model's footprint (:func:`.footprint.loaded_footprint`)
 :func:`loaded_frfs`     the dynamics linearised about it, reduced and swept
                         (:func:`.dynamics.footprint_frf`), on the footprint's tasselli
@@ -19,7 +19,7 @@ import numpy as np
 
 from ...repro.cache import cached
 from ..model import DEFAULT_FREQS, Footprint, FRFResult, LoadCase
-from . import dynamics, footprint, loading, statics
+from . import dynamics, footprint, loading, road_contact, statics
 from .mesh import graded_arcs
 from .spec import LoadedSpec
 from .statics import LoadedTire, StaticState
@@ -33,26 +33,17 @@ def built_tire(spec: LoadedSpec) -> LoadedTire:
     return statics.build_loaded_tire(spec.construction, arcs)
 
 
-def _flat(case: LoadCase) -> LoadCase:
-    """Refuse a drum: the loaded FE tire's contact is with the flat road."""
-    if case.road.kind != "flat":
-        raise ValueError(
-            f"case = {case.describe()}: the loaded FE tire is loaded on the flat road only (its one-sided "
-            "contact holds tread nodes on a plane); valid roads are 'flat'"
-        )
-    return case
-
-
 def loaded_state(spec: LoadedSpec, case: LoadCase) -> StaticState:
-    """Cached: the tire inflated to its file's pressure and loaded on the flat road to ``case.load`` (N)."""
-    inputs = {"tire": spec, **_flat(case).key()}
+    """Cached: the tire inflated to its file's pressure and loaded on the case's road (flat or drum) to
+    ``case.load`` (N)."""
+    inputs = {"tire": spec, **case.key()}
 
     def compute() -> StaticState:
         tire = built_tire(spec)
         inflated = statics.inflate(tire)
-        return loading.load_on_flat_road(tire, inflated, case.load, spec.solid_mesh.road_step)
+        return loading.load_on_road(tire, inflated, case.load, spec.solid_mesh.road_step, case.road)
 
-    return cached(loaded_state, inputs, compute, runs=(loading, statics))
+    return cached(loaded_state, inputs, compute, runs=(loading, road_contact, statics))
 
 
 def loaded_footprint(spec: LoadedSpec, case: LoadCase) -> Footprint:
@@ -63,7 +54,7 @@ def loaded_footprint(spec: LoadedSpec, case: LoadCase) -> Footprint:
         loaded_footprint,
         inputs,
         lambda: footprint.loaded_footprint(built_tire(spec), state, case.load),
-        runs=(footprint, loading, statics),
+        runs=(footprint, loading, road_contact, statics),
     )
 
 
@@ -92,4 +83,4 @@ def loaded_frfs(spec: LoadedSpec, case: LoadCase, freqs: np.ndarray | None = Non
         return footprint.frf_result(frf, tasselli)
 
     inputs = {"tire": spec, **case.key(), "freqs": freqs}
-    return cached(loaded_frfs, inputs, compute, runs=(dynamics, footprint, loading, statics))
+    return cached(loaded_frfs, inputs, compute, runs=(dynamics, footprint, loading, road_contact, statics))

@@ -25,8 +25,8 @@ Each Newton iteration solves the tangent of the free DOF by a banded Cholesky fa
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import Protocol
 
 import numpy as np
 import scipy.sparse as sp
@@ -36,9 +36,12 @@ from ... import guards
 from ..banded import BandedCholesky
 from ..cross_section.geometry import section_mesh
 from ..cross_section.spec import CrossSectionSpec
+from ..surface import RoadSurface
 from . import material, pressure, solid
 from .mesh import SolidMesh, sweep
 
+#: The road of a state not yet loaded.
+FLAT_ROAD = RoadSurface("flat")
 #: Newton stops when the out-of-balance force is below this fraction of the applied forces, or
 #: when its correction moves no node by more than :data:`STEP_TOLERANCE` of the largest
 #: displacement (the round-off floor: the internal forces are sums of ply stresses many times
@@ -137,18 +140,22 @@ class StaticState:
     pressure : float
         Pa.
     road_lift : float
-        How far the road was raised from touching the undeformed tread (m); 0 before loading.
+        How far the road was raised from touching the inflated tread (m); 0 before loading.
     contact : ndarray of int
         Tread nodes held on the road.
     reactions : ndarray (n_dof,)
-        Forces of the rim and the road on the tire (N): minus the out-of-balance force at the
-        held DOF, zero elsewhere.
+        Forces of the rim and the road on the tire (N, global axes): the out-of-balance force at
+        the held DOF, zero elsewhere (on a drum a contact node's force is along the drum's normal).
     history : list of list of list of float
         Per load step and per contact set (one for inflation), the out-of-balance force of the
         free DOF at each Newton iteration, relative to the applied forces.
     stable : bool or None
         Whether the state is a minimum of the potential with its supports and contact set held
-        (:func:`is_stable`); ``None`` when not checked.
+        (:func:`.road_contact.is_stable`); ``None`` when not checked.
+    road : RoadSurface
+        The flat road or the drum it stands on.
+    road_top : float
+        Height of the road's highest point (m; a drum's top, under the axle); NaN before loading.
     """
 
     u: np.ndarray
@@ -158,6 +165,8 @@ class StaticState:
     reactions: np.ndarray | None = None
     history: list = field(default_factory=list)
     stable: bool | None = None
+    road: RoadSurface = FLAT_ROAD
+    road_top: float = float("nan")
 
     @property
     def road_force(self) -> float:
@@ -179,45 +188,77 @@ def solve_tangent(matrix: sp.spmatrix, rhs: np.ndarray) -> np.ndarray:
         return spla.spsolve(sp.csc_matrix(matrix), rhs)
 
 
-def held_dof(tire: LoadedTire, contact: np.ndarray) -> np.ndarray:
-    """DOF held in a loaded state: every DOF of the rim's nodes, the vertical DOF of the ``contact`` nodes."""
-    return np.concatenate([tire.fixed, 3 * np.asarray(contact, int) + 2])
+@dataclass(frozen=True, eq=False)
+class LocalSystem:
+    """The Newton system of one iteration in the supports' frame.
 
+    A support may hold a DOF along a direction of its own (the drum's normal at a contact node): the
+    global DOF ``u = T ũ`` (``frame`` ``T``, orthogonal; ``None``: the global axes), the held local DOF
+    move by ``moves``, and the tangent holds the constraints' curvature (the Hessian of the Lagrangian).
 
-def is_stable(tire: LoadedTire, state: StaticState, tangent: sp.spmatrix | None = None) -> bool:
-    """Whether ``state`` is a minimum of the potential, the rim and the contact nodes' heights held.
-
-    Newton's method finds any stationary point; a saddle is an equilibrium the tire would leave
-    (e.g. the cord plies compressed in the footprint buckling). The tangent of the free DOF is
-    positive definite at a minimum: its Cholesky factor exists. ``tangent``: the tangent at
-    ``state`` if already assembled (the last Newton iteration's), else it is assembled here.
+    Attributes
+    ----------
+    frame : csr_matrix or None
+    held : ndarray of int
+        Held local DOF.
+    moves : ndarray
+        How far each held DOF must move to meet its constraint (m).
+    residual : ndarray
+        Out-of-balance force in the frame (N).
+    tangent : csr_matrix
+        Tangent in the frame (N/m).
     """
-    k = residual_and_tangent(tire, state.u, state.pressure)[1] if tangent is None else sp.csr_matrix(tangent)
-    free = np.setdiff1d(np.arange(tire.n_dof), held_dof(tire, state.contact))
-    try:
-        BandedCholesky(k[free][:, free])
-    except np.linalg.LinAlgError:
+
+    frame: sp.csr_matrix | None
+    held: np.ndarray
+    moves: np.ndarray
+    residual: np.ndarray
+    tangent: sp.csr_matrix
+
+    def to_global(self, local: np.ndarray) -> np.ndarray:
+        return local if self.frame is None else self.frame @ local
+
+    def reactions(self) -> np.ndarray:
+        """Forces of the supports on the tire (N, global): the out-of-balance force at the held DOF."""
+        held = np.zeros(self.residual.size)
+        held[self.held] = self.residual[self.held]
+        return self.to_global(held)
+
+
+class Supports(Protocol):
+    """What holds the tire in a static solve: the rim alone, or the rim and a road (:mod:`.road_contact`)."""
+
+    def local(self, u: np.ndarray, r: np.ndarray, k: sp.csr_matrix) -> LocalSystem:
+        """The Newton system at ``u`` (out-of-balance ``r``, tangent ``k``, global) in the supports' frame."""
+
+    def update(self, u: np.ndarray, system: LocalSystem) -> bool:
+        """Change the held set (the contact set) at a near-equilibrium ``u``; whether it changed."""
+
+
+class Rim:
+    """The beads held on the rim: every DOF of the bead stations at zero displacement."""
+
+    def __init__(self, tire: LoadedTire):
+        self.fixed = tire.fixed
+
+    def local(self, u: np.ndarray, r: np.ndarray, k: sp.csr_matrix) -> LocalSystem:
+        return LocalSystem(frame=None, held=self.fixed, moves=-u[self.fixed], residual=r, tangent=k)
+
+    def update(self, u: np.ndarray, system: LocalSystem) -> bool:
         return False
-    return True
 
 
 def newton(
-    tire: LoadedTire,
-    u: np.ndarray,
-    p: float,
-    held: np.ndarray,
-    held_values: np.ndarray,
-    scale: float,
-    update: Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray] | None] | None = None,
-) -> tuple[np.ndarray, list[list[float]]]:
-    """Newton iterations to equilibrium with the DOF ``held`` at ``held_values``.
+    tire: LoadedTire, u: np.ndarray, p: float, supports: Supports, scale: float
+) -> tuple[np.ndarray, list[list[float]], LocalSystem]:
+    """Newton iterations to equilibrium with the ``supports``' DOF held.
 
-    An iteration that moves held DOF to new values moves the free ones by the tangent at ``u``
-    (a predictor: imposed on the held DOF alone, a road step of millimetres distorts the
-    elements at the footprint's edge into a state whose tangent is indefinite). ``update(u, r)``,
-    called once the out-of-balance force ``r`` is below :data:`ACTIVE_SET_TOLERANCE`, gives new
-    held DOF and values (the contact set) or ``None`` to keep them; the iterations end at
-    equilibrium with the set unchanged, so once it settles they are Newton's on fixed constraints.
+    An iteration that moves held DOF to meet their constraints moves the free ones by the tangent
+    at ``u`` (a predictor: imposed on the held DOF alone, a road step of millimetres distorts the
+    elements at the footprint's edge into a state whose tangent is indefinite). ``supports.update``,
+    called once the out-of-balance force is below :data:`ACTIVE_SET_TOLERANCE` and the constraints
+    are met, may change the held set (the contact set); the iterations end at equilibrium with the
+    set unchanged, so once it settles they are Newton's on fixed constraints.
 
     Returns
     -------
@@ -226,48 +267,52 @@ def newton(
     history : list of list of float
         The out-of-balance force of the free DOF relative to ``scale`` at each iteration, one list
         per held set (a new list when ``update`` changes it).
-    tangent : scipy.sparse.csr_matrix
-        The tangent at ``u`` (N/m), all DOF: the last iteration's.
+    system : LocalSystem
+        The last iteration's system (its tangent and the supports' reactions at ``u``).
     """
     u = u.copy()
-    free = np.setdiff1d(np.arange(tire.n_dof), held)
-    moved = np.asarray(held_values, float) - u[held]
     history, updates, tiny_step = [[]], 0, False
     for _ in range(MAX_ITERATIONS):
         r, k = residual_and_tangent(tire, u, p)
-        size = np.linalg.norm(r[free]) / scale
+        system = supports.local(u, r, k)
+        free = np.setdiff1d(np.arange(tire.n_dof), system.held)
+        size = np.linalg.norm(system.residual[free]) / scale
         history[-1].append(size)
         converged = tiny_step or size < TOLERANCE
-        if update is not None and not moved.any() and size < ACTIVE_SET_TOLERANCE:
-            changed = update(u, r)
-            if changed is not None:
-                updates += 1
-                if updates > MAX_ACTIVE_SET_UPDATES:
-                    raise RuntimeError(
-                        f"the contact set did not settle in {MAX_ACTIVE_SET_UPDATES} updates: take more load steps"
-                    )
-                held, held_values = changed
-                free = np.setdiff1d(np.arange(tire.n_dof), held)
-                moved = np.asarray(held_values, float) - u[held]
-                converged = tiny_step = False
-                history.append([])
-        if converged and not moved.any():
-            return u, history, k
+        moving = _moving(system, u)
+        if not moving and size < ACTIVE_SET_TOLERANCE and supports.update(u, system):
+            updates += 1
+            if updates > MAX_ACTIVE_SET_UPDATES:
+                raise RuntimeError(
+                    f"the contact set did not settle in {MAX_ACTIVE_SET_UPDATES} updates: take more load steps"
+                )
+            system = supports.local(u, r, k)
+            free = np.setdiff1d(np.arange(tire.n_dof), system.held)
+            moving, converged, tiny_step = _moving(system, u), False, False
+            history.append([])
+        if converged and not moving:
+            return u, history, system
         step = np.zeros(tire.n_dof)
-        k_free = k[free]
-        if moved.any():
-            step[held] = moved
-            step[free] = solve_tangent(k_free[:, free], -r[free] - k_free[:, held] @ moved)
-            part = _admissible_part(tire, u, step)
-            u, moved = u + part * step, (1.0 - part) * moved
+        k_free = system.tangent[free]
+        if moving:
+            step[system.held] = system.moves
+            step[free] = solve_tangent(k_free[:, free], -system.residual[free] - k_free[:, system.held] @ system.moves)
+            step = system.to_global(step)
+            u = u + _admissible_part(tire, u, step) * step
             continue
-        step[free] = solve_tangent(k_free[:, free], -r[free])
+        step[free] = solve_tangent(k_free[:, free], -system.residual[free])
+        step = system.to_global(step)
         tiny_step = np.abs(step).max() <= STEP_TOLERANCE * np.abs(u).max()
         u = u + step if tiny_step else _line_search(tire, u, step, r, p)
     raise RuntimeError(
         f"the static solve did not converge in {MAX_ITERATIONS} Newton iterations (out-of-balance "
         f"{size:.3g} of the load): take smaller load steps"
     )
+
+
+def _moving(system: LocalSystem, u: np.ndarray) -> bool:
+    """Whether a held DOF must still move to meet its constraint (beyond the round-off of ``u``)."""
+    return bool(system.moves.size and np.abs(system.moves).max() > STEP_TOLERANCE * np.abs(u).max())
 
 
 def _admissible_part(tire: LoadedTire, u: np.ndarray, step: np.ndarray) -> float:
@@ -312,106 +357,6 @@ def inflate(tire: LoadedTire, p: float | None = None, steps: int = 1) -> StaticS
     history = []
     for level in np.linspace(p / steps, p, steps):
         scale = np.linalg.norm(pressure.pressure_load(tire.mesh, tire.surface, u, level))
-        u, steps_history, _ = newton(tire, u, level, tire.fixed, np.zeros(tire.fixed.size), scale)
+        u, steps_history, system = newton(tire, u, level, Rim(tire), scale)
         history.append(steps_history)
-    return StaticState(u=u, pressure=p, reactions=_reactions(tire, u, p, tire.fixed), history=history)
-
-
-def _reactions(tire: LoadedTire, u: np.ndarray, p: float, held: np.ndarray) -> np.ndarray:
-    """Forces of the supports on the tire at the ``held`` DOF: the out-of-balance force there."""
-    r = solid.internal_force(tire.groups, u, tire.n_dof) - pressure.pressure_load(tire.mesh, tire.surface, u, p)
-    reactions = np.zeros(tire.n_dof)
-    reactions[held] = r[held]
-    return reactions
-
-
-def tread_heights(tire: LoadedTire, u: np.ndarray) -> np.ndarray:
-    """Height ``z`` (m) of every tread node displaced by ``u``."""
-    return tire.mesh.coordinates[tire.tread, 2] + u[3 * tire.tread + 2]
-
-
-class _RoadContact:
-    """The tread nodes held on a flat road at height ``road`` (m), and their primal-dual update."""
-
-    def __init__(self, tire: LoadedTire, road: float, gap_tolerance: float, active: np.ndarray):
-        self.tire, self.road, self.gap_tolerance, self.active = tire, road, gap_tolerance, active
-
-    def constraints(self) -> tuple[np.ndarray, np.ndarray]:
-        """Held DOF (the rim's, the contact nodes' vertical) and their displacements (m)."""
-        tire = self.tire
-        held = held_dof(tire, self.active)
-        heights = self.road - tire.mesh.coordinates[self.active, 2]
-        return held, np.concatenate([np.zeros(tire.fixed.size), heights])
-
-    def update(self, u: np.ndarray, r: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
-        """Release the held nodes the road pulls, hold the free ones below it; ``None`` if none."""
-        pulled = self.active[r[3 * self.active + 2] < 0.0]
-        below = self.tire.tread[tread_heights(self.tire, u) < self.road - self.gap_tolerance]
-        below = np.setdiff1d(below, self.active)
-        if not pulled.size and not below.size:
-            return None
-        self.active = np.union1d(np.setdiff1d(self.active, pulled), below)
-        return self.constraints()
-
-
-def press_on_flat_road(
-    tire: LoadedTire, inflated: StaticState, lift: float, steps: int = 4, start: StaticState | None = None
-) -> StaticState:
-    """The flat road raised ``lift`` (m) from touching the inflated tread, in ``steps`` equal steps; rim held.
-
-    Each step's contact set is found by a primal-dual active set: tread nodes below the road are
-    held on it, held nodes the road pulls down are released, until the set no longer changes.
-    The final state's stability is checked (:func:`is_stable`); a saddle gets a
-    :class:`~roadnoise_utils.guards.RoadnoiseWarning`.
-    ``start``: a loaded state of the same inflation to continue from (its lift and contact set)
-    instead of the inflated tire.
-    """
-    lift = guards.real("lift", lift, 0.0, lo_open=True, unit="m")
-    steps = guards.integer("steps", steps, 1)
-    touch = float(tread_heights(tire, inflated.u).min())
-    rim = float(tire.mesh.coordinates[tire.mesh.bead_nodes, 2].min()) - touch  # the rim's lowest point above the road
-    if lift >= rim:
-        raise ValueError(
-            f"lift = {lift!r} m: valid range is (0, {rim:.4g}) m; the road would reach the rim (the tire bottoms)"
-        )
-    if start is not None and start.pressure != inflated.pressure:
-        raise ValueError(f"start is a state at {start.pressure:g} Pa, the inflated tire at {inflated.pressure:g} Pa")
-    begin = inflated if start is None else start
-    u, p = begin.u.copy(), inflated.pressure
-    history = list(begin.history)
-    active = begin.contact.copy()
-    for level in np.linspace(begin.road_lift + (lift - begin.road_lift) / steps, lift, steps):
-        road = touch + level
-        active = np.union1d(active, tire.tread[tread_heights(tire, u) < road])
-        contact = _RoadContact(tire, road, GAP_TOLERANCE * lift, active)
-        scale = np.linalg.norm(pressure.pressure_load(tire.mesh, tire.surface, u, p))
-        u, step_history, tangent = newton(tire, u, p, *contact.constraints(), scale, update=contact.update)
-        history.append(step_history)
-        active = contact.active
-    held = held_dof(tire, active)
-    state = StaticState(
-        u=u, pressure=p, road_lift=lift, contact=active, reactions=_reactions(tire, u, p, held), history=history
-    )
-    state.stable = is_stable(tire, state, tangent)
-    if not state.stable:
-        guards.warn(
-            f"the loaded state at a lift of {lift * 1e3:.3g} mm ({state.road_force:.0f} N) is a saddle of the "
-            "potential, not a minimum: its tangent has a negative direction (e.g. the cord plies compressed in "
-            "the footprint buckling between the nodes), so its stiffness and footprint are those of an "
-            "equilibrium the tire would leave; lower the load"
-        )
-    return state
-
-
-def vertical_stiffness(tire: LoadedTire, state: StaticState) -> float:
-    r"""Tangent vertical stiffness (N/m) of a loaded state: the road's force per road lift, contact set held.
-
-    The condensed tangent: the road's DOF moved by one, the free DOF in equilibrium,
-    :math:`K_v = \sum_{road} (K_{rr} + K_{rf} \Delta u_f)` with :math:`K_{ff}\Delta u_f = -K_{fr} 1`.
-    """
-    _, k = residual_and_tangent(tire, state.u, state.pressure)
-    road = 3 * state.contact + 2
-    free = np.setdiff1d(np.arange(tire.n_dof), held_dof(tire, state.contact))
-    moved = np.asarray(k[free][:, road].sum(axis=1)).ravel()
-    du = solve_tangent(k[free][:, free], -moved)
-    return float(k[road][:, road].sum() + np.asarray(k[road][:, free] @ du).sum())
+    return StaticState(u=u, pressure=p, reactions=system.reactions(), history=history)

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import roadnoise_utils as ru
-from roadnoise_utils.tire.loaded import stages, statics
+from roadnoise_utils.tire.loaded import road_contact, stages, statics
 
 SMALL = {"mesh.crown_elements": 4, "mesh.sidewall_elements": 2}
 
@@ -27,13 +27,18 @@ def inflated(tire):
 
 @pytest.fixture(scope="session")
 def loaded(tire, inflated):
-    return statics.press_on_flat_road(tire, inflated, 0.005, steps=2)
+    return road_contact.press_on_road(tire, inflated, 0.005, steps=2)
 
 
 @pytest.fixture(scope="session")
 def model_tire(small_loaded):
     """The loaded FE tire's test mesh (``SMALL_LOADED``: 8 graded arcs, 4080 DOF)."""
     return stages.built_tire(small_loaded.spec)
+
+
+@pytest.fixture(scope="session")
+def model_inflated(model_tire):
+    return statics.inflate(model_tire)
 
 
 @pytest.fixture(scope="session")

@@ -13,7 +13,7 @@ import dataclasses
 import numpy as np
 import pytest
 
-from roadnoise_utils.tire.loaded import dynamics, footprint, statics
+from roadnoise_utils.tire.loaded import dynamics, footprint, road_contact, statics
 
 FREQS = np.array([0.0, 100.0, 250.0, 400.0])
 
@@ -49,7 +49,7 @@ def test_the_stiffness_parts_sum_to_the_static_tangent(tire, loaded, linearised)
 
 def test_at_rest_the_footprint_transfer_is_the_static_vertical_stiffness(tire, loaded, direct):
     """H_tot(0) = K_v and G_H(0) = -K_v, K_v from the condensed static tangent (every ratio is 1 at rest)."""
-    k_v = statics.vertical_stiffness(tire, loaded)
+    k_v = road_contact.vertical_stiffness(tire, loaded)
     assert abs(direct.H_tot[0] / k_v - 1) < 1e-9 and abs(direct.G_H[0] / k_v + 1) < 1e-9
     assert np.all(np.abs(direct.hub[0].imag) < 1e-9 * k_v)
 
@@ -118,7 +118,7 @@ def test_the_loaded_footprint_balances_the_load_with_its_pressures_and_the_hub(t
     assert np.hypot(x[mirror] - x, y[mirror] + y).max() < 1e-9
     np.testing.assert_allclose(fp.node_pressure[mirror], fp.node_pressure, rtol=1e-9)
     assert fp.force_balance() < 1e-9 and np.all(fp.node_pressure > 0)
-    assert fp.deflection == loaded.road_lift and fp.vertical_stiffness == statics.vertical_stiffness(tire, loaded)
+    assert fp.deflection == loaded.road_lift and fp.vertical_stiffness == road_contact.vertical_stiffness(tire, loaded)
 
 
 @pytest.mark.parametrize("target", [0.0165, 0.0185, 0.0245])

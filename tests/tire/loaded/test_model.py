@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 import roadnoise_utils as ru
-from roadnoise_utils.tire.loaded import loading, statics
+from roadnoise_utils.tire.loaded import loading, road_contact, statics
 from roadnoise_utils.tire.loaded.spec import from_dict
 from roadnoise_utils.tire.model import NotApplicable
 
@@ -23,7 +23,7 @@ def test_the_load_case_is_carried_by_a_minimum_whatever_path_the_load_takes(smal
     assert abs(loaded.road_force / small_loaded.default_load - 1) < loading.LOAD_TOLERANCE and loaded.stable
     assert footprint.force_balance() < 1e-9 and footprint.deflection == loaded.road_lift
     inflated = statics.inflate(tire)
-    direct = statics.press_on_flat_road(tire, inflated, loaded.road_lift, steps=3)  # straight to the landed lift
+    direct = road_contact.press_on_road(tire, inflated, loaded.road_lift, steps=3)  # straight to the landed lift
     assert np.array_equal(direct.contact, loaded.contact)
     assert np.abs(direct.u - loaded.u).max() < 1e-8 * np.abs(loaded.u).max()
 
@@ -31,16 +31,14 @@ def test_the_load_case_is_carried_by_a_minimum_whatever_path_the_load_takes(smal
 def test_a_load_the_tire_cannot_carry_is_refused_naming_the_load(tire):
     soft = statics.inflate(tire, 0.5e5)
     with pytest.raises(ValueError, match=r"load = 15000 N: the tire carries at most \d+ N before the road reaches"):
-        loading.load_on_flat_road(tire, soft, 15000.0, 0.02)
+        loading.load_on_road(tire, soft, 15000.0, 0.02)
     with pytest.raises(ValueError, match="road_step"):
-        loading.load_on_flat_road(tire, soft, 1000.0, 0.0)
+        loading.load_on_road(tire, soft, 1000.0, 0.0)
     with pytest.raises(ValueError, match="load"):
-        loading.load_on_flat_road(tire, soft, 100.0, 0.001)
+        loading.load_on_road(tire, soft, 100.0, 0.001)
 
 
-def test_a_drum_sticking_contact_and_what_it_lacks_are_refused_by_name(small_loaded, model_tire):
-    with pytest.raises(ValueError, match="flat road only"):
-        small_loaded.load(small_loaded.case("drum", drum_radius=1.25))
+def test_sticking_contact_and_what_it_lacks_are_refused_by_name(small_loaded, model_tire):
     with pytest.raises(ValueError, match="stick = True"):
         small_loaded.fixed_hub_frfs(small_loaded.case(), stick=True)
     for capability in ("cavity", "modal_reduction", "one_sided_cleat", "released_hub"):

@@ -12,7 +12,7 @@ import pytest
 
 from roadnoise_utils.guards import RoadnoiseWarning
 from roadnoise_utils.tire.cross_section.operators import harmonic_operators
-from roadnoise_utils.tire.loaded import pressure, solid, statics
+from roadnoise_utils.tire.loaded import pressure, road_contact, solid, statics
 
 
 def _random_free(tire, rng, size):
@@ -82,8 +82,8 @@ def test_pressed_on_the_flat_road_the_contact_is_one_sided_symmetric_and_balance
     assert loaded.road_force > 0.0
     contact = 3 * loaded.contact + 2
     assert np.all(loaded.reactions[contact] >= 0.0)  # the road only pushes...
-    road = statics.tread_heights(tire, inflated.u).min() + loaded.road_lift
-    heights = statics.tread_heights(tire, loaded.u)
+    road = road_contact.tread_heights(tire, inflated.u).min() + loaded.road_lift
+    heights = road_contact.tread_heights(tire, loaded.u)
     np.testing.assert_allclose(heights[np.isin(tire.tread, loaded.contact)], road, rtol=0, atol=1e-12)
     assert heights.min() >= road - 1e-12  # ... and no tread node is below it
     x = tire.mesh.coordinates[loaded.contact, 0]
@@ -101,8 +101,8 @@ def test_pressed_on_the_flat_road_the_contact_is_one_sided_symmetric_and_balance
 
 
 def test_the_tangent_vertical_stiffness_is_the_derivative_of_the_road_force(tire, inflated, loaded):
-    k_v = statics.vertical_stiffness(tire, loaded)
-    nudged = statics.press_on_flat_road(tire, inflated, loaded.road_lift * (1 + 1e-4), steps=1, start=loaded)
+    k_v = road_contact.vertical_stiffness(tire, loaded)
+    nudged = road_contact.press_on_road(tire, inflated, loaded.road_lift * (1 + 1e-4), steps=1, start=loaded)
     assert np.array_equal(nudged.contact, loaded.contact)
     secant = (nudged.road_force - loaded.road_force) / (1e-4 * loaded.road_lift)
     assert abs(secant / k_v - 1) < 1e-4
@@ -111,12 +111,12 @@ def test_the_tangent_vertical_stiffness_is_the_derivative_of_the_road_force(tire
 def test_a_road_that_does_not_rise_is_refused(tire, inflated):
     for lift in (0.0, -0.001, float("nan"), "0.005", True):
         with pytest.raises(ValueError, match="lift"):
-            statics.press_on_flat_road(tire, inflated, lift)
+            road_contact.press_on_road(tire, inflated, lift)
 
 
 def test_the_loaded_state_does_not_depend_on_the_load_steps(tire, inflated, loaded):
     """Elastic and frictionless: one road step of the whole lift reaches the two steps' equilibrium."""
-    one_step = statics.press_on_flat_road(tire, inflated, loaded.road_lift, steps=1)
+    one_step = road_contact.press_on_road(tire, inflated, loaded.road_lift, steps=1)
     assert np.array_equal(one_step.contact, loaded.contact)
     assert abs(one_step.road_force / loaded.road_force - 1) < 1e-9
     assert np.abs(one_step.u - loaded.u).max() < 1e-9 * np.abs(loaded.u).max()
@@ -133,27 +133,27 @@ def test_an_inverted_point_is_refused(tire):
 def test_a_stable_loaded_state_is_recognised_and_a_saddle_is_not(tire, inflated, loaded):
     """At the inflated and the loaded state the tangent is positive definite; the round tire under the
     full pressure (the pressure's load stiffness without the pre-stress it builds) is no minimum."""
-    assert loaded.stable is True and statics.is_stable(tire, loaded) and statics.is_stable(tire, inflated)
-    assert not statics.is_stable(tire, statics.StaticState(u=np.zeros(tire.n_dof), pressure=inflated.pressure))
+    assert loaded.stable is True and road_contact.is_stable(tire, loaded) and road_contact.is_stable(tire, inflated)
+    assert not road_contact.is_stable(tire, statics.StaticState(u=np.zeros(tire.n_dof), pressure=inflated.pressure))
 
 
 def test_a_saddle_reached_by_the_loading_is_reported(tire, inflated, loaded, monkeypatch):
-    monkeypatch.setattr(statics, "is_stable", lambda tire, state, tangent=None: False)
+    monkeypatch.setattr(road_contact, "is_stable", lambda tire, state, system=None: False)
     with pytest.warns(RoadnoiseWarning, match="saddle"):
-        state = statics.press_on_flat_road(tire, inflated, loaded.road_lift, steps=1, start=loaded)
+        state = road_contact.press_on_road(tire, inflated, loaded.road_lift, steps=1, start=loaded)
     assert state.stable is False
 
 
 def test_load_steps_a_lift_that_bottoms_the_tire_or_a_foreign_start_are_refused(tire, inflated, loaded):
     for steps in (0, -1, 2.5, "2"):
         with pytest.raises(ValueError, match="steps"):
-            statics.press_on_flat_road(tire, inflated, 0.001, steps=steps)
+            road_contact.press_on_road(tire, inflated, 0.001, steps=steps)
     with pytest.raises(ValueError, match="steps"):
         statics.inflate(tire, steps=0)
-    rim = tire.mesh.coordinates[tire.mesh.bead_nodes, 2].min() - statics.tread_heights(tire, inflated.u).min()
+    rim = tire.mesh.coordinates[tire.mesh.bead_nodes, 2].min() - road_contact.tread_heights(tire, inflated.u).min()
     assert 0.08 < rim < 0.15  # the 165/65 R14's section height, 107 mm, and the rim's flange
     with pytest.raises(ValueError, match="bottoms"):
-        statics.press_on_flat_road(tire, inflated, rim)
+        road_contact.press_on_road(tire, inflated, rim)
     softer = statics.StaticState(u=loaded.u, pressure=0.5 * inflated.pressure, road_lift=loaded.road_lift)
     with pytest.raises(ValueError, match="start"):
-        statics.press_on_flat_road(tire, inflated, 0.006, start=softer)
+        road_contact.press_on_road(tire, inflated, 0.006, start=softer)
