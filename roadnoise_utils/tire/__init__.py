@@ -9,7 +9,8 @@ compounds' frequency-dependent moduli), ``cavity`` (the air cavity's acoustic wa
 footprint geometry read from CSV). One folder per model, each with its spec, statics,
 dynamics and checks: ``ring`` (the ring-based FET of notebook 01), ``cross_section`` (the
 layered cross-section tire of notebook 09), ``frf_file`` (a user's FE tire read from UFF 58
-FRFs and a footprint file).
+FRFs and a footprint file), ``loaded`` (the cross-section's construction as 3-D solids loaded by
+large-deformation statics, linearised about its loaded state).
 """
 
 from . import active_set, cavity, contact, footprint_file, model, rubber, surface, tasselli

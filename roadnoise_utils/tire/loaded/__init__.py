@@ -1,9 +1,13 @@
-"""The loaded FE tire: the cross-section tire's construction swept into 3-D solids, for large-deformation statics.
+"""The loaded FE tire (``[tire] model = "loaded-fe"``): the paper's own kind of FE tire.
 
-Built so far: the swept mesh (:mod:`.mesh`), the hyperelastic layers consistent with the
-cross-section tire's small-strain moduli (:mod:`.material`) and the total Lagrangian 27-node
-layered solids with their consistent tangent and mass (:mod:`.solid`). Linearised about the
-round, unloaded tire they are the waveguide tire of the same file
-(:mod:`roadnoise_utils.tire.cross_section.waveguide`) with the circumference discretised by
-elements instead of Fourier harmonics.
+The cross-section tire's construction swept into 27-node layered solids (:mod:`.mesh`,
+:mod:`.solid`), its layers hyperelastic and consistent with the small-strain moduli
+(:mod:`.material`), the follower inflation pressure (:mod:`.pressure`); mounted, inflated and
+pressed on the flat road or a drum by large-deformation statics (:mod:`.statics`: Newton on the
+supports; :mod:`.road_contact`: frictionless one-sided contact; :mod:`.loading`: to a load case's
+load), then linearised about that loaded state for its footprint FRFs (:mod:`.dynamics`) on
+tasselli of its own footprint (:mod:`.footprint`). :mod:`.linearised` holds the tire linearised
+about its round or inflated state (the waveguide tire of the same file, with the circumference in
+elements instead of harmonics: the verification). :mod:`.spec` reads its tire file,
+:mod:`.stages` caches its stages and :mod:`.model` answers the tire-model interface.
 """

@@ -9,12 +9,9 @@ Newton iterations cannot follow and a lift that will not settle are refused by n
 
 from __future__ import annotations
 
-import warnings
-
 from scipy.optimize import brentq
 
 from ... import guards
-from ...guards import RoadnoiseWarning
 from ..surface import RoadSurface
 from . import road_contact
 from .road_contact import FLAT
@@ -78,10 +75,8 @@ def _pressed(
     road: RoadSurface,
 ) -> StaticState:
     """One road position from ``start``; the statics' errors restated in terms of the load case."""
-    try:
-        with warnings.catch_warnings():  # only the final state's stability is reported
-            warnings.simplefilter("ignore", RoadnoiseWarning)
-            return road_contact.press_on_road(tire, inflated, lift, road, steps=1, start=start)
+    try:  # only the final state's stability is checked
+        return road_contact.press_on_road(tire, inflated, lift, road, steps=1, start=start, check_stability=False)
     except ValueError as exc:
         if "the tire bottoms" not in str(exc):
             raise
@@ -139,7 +134,8 @@ def _land(
 
 
 def _final(tire: LoadedTire, state: StaticState, load: float) -> StaticState:
-    """The landed state, warned of if it is a saddle of the potential."""
+    """The landed state, its stability checked, warned of if it is a saddle of the potential."""
+    state.stable = road_contact.is_stable(tire, state)
     if not state.stable:
         guards.warn(
             f"the loaded state at {load:.0f} N is a saddle of the potential, not a minimum: its tangent has a "

@@ -138,12 +138,14 @@ def press_on_road(
     road: RoadSurface = FLAT,
     steps: int = 4,
     start: StaticState | None = None,
+    check_stability: bool = True,
 ) -> StaticState:
     """The road raised ``lift`` (m) from touching the inflated tread, in ``steps`` equal steps; rim held.
 
     ``road``: the flat road or a drum (its top under the axle). Each step's contact set is found
     by the primal-dual active set, until it no longer changes. The final state's stability is
-    checked (:func:`is_stable`); a saddle gets a :class:`~roadnoise_utils.guards.RoadnoiseWarning`.
+    checked (:func:`is_stable`; ``check_stability=False``: not, ``stable`` is ``None``, for a state
+    on the way to another); a saddle gets a :class:`~roadnoise_utils.guards.RoadnoiseWarning`.
     ``start``: a loaded state of the same inflation and road to continue from (its lift and
     contact set) instead of the inflated tire.
     """
@@ -191,6 +193,8 @@ def press_on_road(
         road=road,
         road_top=touch + lift,
     )
+    if not check_stability:
+        return state
     state.stable = is_stable(tire, state, system)
     if not state.stable:
         guards.warn(
