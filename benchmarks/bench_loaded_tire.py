@@ -31,6 +31,12 @@ the swept solids take arcs of ``--arcs`` (m) over the footprint sector (+-0.28 r
    chain's quasi-static peak of the paper's 15 x 15 mm cleat on the flat road (the static
    influences H_i(0) times the cleat's tassello inputs, at its worst position).
 
+``--drum`` instead runs both tires through the tire-model interface on the paper's drum (the
+loaded FE tire from its tire file, ``--loaded``; the waveguide of the same section): the loading's
+time, deflection, tangent K_v, tasselli and peak pressure, H_tot at rest and its first peaks, the
+static influence of the footprint's end rows, and the linear chain's quasi-static peak of the
+paper's 15 x 15 mm cleat (:func:`roadnoise_utils.experiments.cleat.quasi_static_peak`).
+
 ``--modes N`` first compares the inflated, unloaded modes n = 0..6 on N uniform arcs with the
 waveguide's: each solid mode's harmonic is the one that carries most of its displacement.
 """
@@ -222,6 +228,33 @@ def compare_dynamics(spec, tire, state) -> None:
     )
 
 
+def compare_on_drum(loaded_name: str) -> None:
+    """Both tires on the paper's drum through the tire-model interface (their cached stages)."""
+    from roadnoise_utils.experiments.cleat import cleat_conditions, quasi_static_peak
+
+    loaded = tire_model(loaded_name)
+    construction = loaded.spec.construction.replace(**{"tasselli.strips_per_column": 1})
+    conditions = cleat_conditions()
+    print(
+        "  tire      | load s | FRFs s | deflection mm | K_v N/mm | tasselli | peak MPa | H_tot(0) N/mm | first peaks of |H_tot| | end rows N/mm | cleat peak N"
+    )
+    for name, model in (("loaded FE", loaded), ("waveguide", tire_model(construction))):
+        case = model.case("drum", drum_radius=conditions.drum_radius)
+        t0 = time.perf_counter()
+        fp = model.load(case)
+        t1 = time.perf_counter()
+        frfs = model.fixed_hub_frfs(case)
+        t2 = time.perf_counter()
+        rows = row_influence(fp, frfs.H[:, 0].real)["H(0) of the row (N/mm)"].to_numpy()
+        peak = quasi_static_peak(model, conditions.height, conditions.base, conditions.shape, conditions.drum_radius)
+        print(
+            f"  {name:9s} | {t1 - t0:6.0f} | {t2 - t1:6.0f} | {fp.deflection * 1e3:13.1f} | {fp.vertical_stiffness / 1e3:8.1f}"
+            f" | {fp.tasselli.n:8d} | {fp.node_pressure.max() / 1e6:8.2f} | {frfs.H_tot[0].real / 1e3:13.1f}"
+            f" | {peaks(frfs.H_tot, frfs.freqs, 3):22s} | {rows[0]:5.1f}, {rows[-1]:5.1f} | {peak:.0f}",
+            flush=True,
+        )
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--tire", default="165_65R14_cross_section")
@@ -232,7 +265,12 @@ def main() -> None:
     parser.add_argument("--no-nonlinear", dest="nonlinear", action="store_false")
     parser.add_argument("--no-dynamics", dest="dynamics", action="store_false")
     parser.add_argument("--modes", type=int, default=0, help="uniform arcs for the modes' comparison (0: none)")
+    parser.add_argument("--drum", action="store_true", help="both tires on the drum through the interface")
+    parser.add_argument("--loaded", default="165_65R14_loaded", help="the loaded FE tire file of --drum")
     args = parser.parse_args()
+    if args.drum:
+        compare_on_drum(args.loaded)
+        return
     # one contact column per tassello column: the coarse crown's tread nodes are ~15 mm apart
     section = {"mesh.crown_elements": args.crown, "mesh.sidewall_elements": args.sidewall}
     spec = ru.load_tire(args.tire).replace(**section, **{"tasselli.strips_per_column": 1})
