@@ -9,5 +9,6 @@ load), then linearised about that loaded state for its footprint FRFs (:mod:`.dy
 tasselli of its own footprint (:mod:`.footprint`). :mod:`.linearised` holds the tire linearised
 about its round or inflated state (the waveguide tire of the same file, with the circumference in
 elements instead of harmonics: the verification). :mod:`.spec` reads its tire file,
-:mod:`.stages` caches its stages and :mod:`.model` answers the tire-model interface.
+:mod:`roadnoise_utils.tire.loaded.stages` caches its stages and :mod:`roadnoise_utils.tire.loaded.model`
+answers the tire-model interface.
 """

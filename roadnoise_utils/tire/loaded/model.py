@@ -2,7 +2,7 @@
 
 The paper's own kind of FE tire: the construction swept into 3-D solids, mounted, inflated and
 pressed on the road by large-deformation statics, its dynamics linearised about that loaded
-state. Its stages are cached by :mod:`.stages`; this class answers the pipeline's calls with them.
+state. Its stages are cached by :mod:`roadnoise_utils.tire.loaded.stages`; this class answers the pipeline's calls with them.
 It stands on the flat road or a drum (frictionless one-sided contact); the one-sided cleat, the
 modal reduction and the air cavity are not part of it
 (:meth:`~roadnoise_utils.tire.model.TireModel.require` says so).
@@ -50,13 +50,13 @@ class LoadedFEModel(TireModel):
         return (dynamics, loading, road_contact, statics)
 
     def load(self, case: LoadCase) -> Footprint:
-        """:func:`.stages.loaded_footprint` (cached): the loaded state on the case's road."""
+        """:func:`roadnoise_utils.tire.loaded.stages.loaded_footprint` (cached): the loaded state on the case's road."""
         return stages.loaded_footprint(self.spec, case)
 
     def fixed_hub_frfs(
         self, case: LoadCase, freqs: np.ndarray | None = None, progress: bool = False, stick: bool | None = None
     ) -> FRFResult:
-        """:func:`.stages.loaded_frfs` (cached; default 0-400 Hz every 1 Hz). Its contact nodes are held
+        """:func:`roadnoise_utils.tire.loaded.stages.loaded_frfs` (cached; default 0-400 Hz every 1 Hz). Its contact nodes are held
         vertically and slide freely along the road, so ``stick`` must be ``None`` or ``False``."""
         if stick:
             raise ValueError(

@@ -1,14 +1,14 @@
 """Cached stages of the loaded FE tire (``[tire] model = "loaded-fe"``).
 
-======================  ===========================================================================
-stage                   caches
-======================  ===========================================================================
-:func:`loaded_state`    mount, inflation (:func:`.statics.inflate`) and the nonlinear loading to the
-                        case's load on its road (:func:`.loading.load_on_road`)
+========================  =========================================================================
+stage                     caches
+========================  =========================================================================
+:func:`loaded_state`      mount, inflation (:func:`.statics.inflate`) and the nonlinear loading to
+                          the case's load on its road (:func:`.loading.load_on_road`)
 :func:`loaded_footprint`  the state as every model's footprint (:func:`.footprint.loaded_footprint`)
-:func:`loaded_frfs`     the dynamics linearised about it, reduced and swept
-                        (:func:`.dynamics.footprint_frf`), on the footprint's tasselli
-======================  ===========================================================================
+:func:`loaded_frfs`       the dynamics linearised about it, reduced and swept
+                          (:func:`.dynamics.footprint_frf`), on the footprint's tasselli
+========================  =========================================================================
 
 :func:`built_tire` (the swept mesh and its integration points: about a second) is not cached.
 """
