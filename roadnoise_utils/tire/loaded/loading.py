@@ -25,7 +25,12 @@ MAX_LANDING_ITERATIONS = 20
 
 
 def load_on_road(
-    tire: LoadedTire, inflated: StaticState, load: float, road_step: float, road: RoadSurface = FLAT
+    tire: LoadedTire,
+    inflated: StaticState,
+    load: float,
+    road_step: float,
+    road: RoadSurface = FLAT,
+    start: StaticState | None = None,
 ) -> StaticState:
     """The inflated tire pressed on ``road`` (the flat road or a drum) until the road carries ``load`` (N).
 
@@ -39,6 +44,9 @@ def load_on_road(
         Road lift per load step (m): the steps the Newton iterations follow.
     road : RoadSurface
         The flat road (default) or a drum.
+    start : StaticState, optional
+        A state of the same tire, inflation and road carrying less than ``load`` to continue from
+        (a load sweep: :func:`load_sweep`); default the inflated tire.
 
     Returns
     -------
@@ -55,7 +63,11 @@ def load_on_road(
     """
     load = guards.real("load", load, *guards.LOAD_RANGE, unit="N")
     road_step = guards.real("road_step", road_step, 0.0, 0.05, lo_open=True, unit="m")
-    below, above = inflated, None
+    below, above = (inflated if start is None else start), None
+    if below.road_force >= load:
+        raise ValueError(
+            f"start carries {below.road_force:.0f} N, not less than load = {load:g} N: give a lighter start"
+        )
     while above is None:
         state = _pressed(tire, inflated, below.road_lift + road_step, below, load, road_step, road)
         if state.road_force >= load:
@@ -63,6 +75,20 @@ def load_on_road(
         else:
             below = state
     return _land(tire, inflated, load, below, above, road_step, road)
+
+
+def load_sweep(
+    tire: LoadedTire, inflated: StaticState, loads: list[float], road_step: float, road: RoadSurface = FLAT
+) -> list[StaticState]:
+    """The tire at each of ``loads`` (N, increasing) on ``road``, each loading continuing from the last
+    state (:func:`load_on_road`): one pass of road steps for the whole load-deflection curve."""
+    loads = [guards.real("loads", load, *guards.LOAD_RANGE, unit="N") for load in loads]
+    if not loads or any(b <= a for a, b in zip(loads, loads[1:])):
+        raise ValueError(f"loads = {loads}: give one or more strictly increasing loads (N)")
+    states: list[StaticState] = []
+    for load in loads:
+        states.append(load_on_road(tire, inflated, load, road_step, road, start=states[-1] if states else None))
+    return states
 
 
 def _pressed(
