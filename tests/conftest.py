@@ -81,7 +81,8 @@ COARSE_SECTION = {
 
 #: The loaded FE tire's test mesh: the section at 4 crown and 2 x 2 sidewall elements (tread nodes 15 mm
 #: apart, within the footprint files' 25 mm) swept through 40 mm arcs over +-40 mm at the bottom, growing
-#: threefold per arc (8 arcs, 4080 DOF), loaded to 1 kN on the flat road in 2.5 mm road steps.
+#: threefold per arc (8 arcs, 4080 DOF), loaded to 1 kN on the flat road (6.1 mm: one road step of 7 mm, then
+#: Brent's method on the lift).
 SMALL_LOADED = {
     "solid_mesh.crown_elements": 4,
     "solid_mesh.sidewall_elements": 2,
@@ -89,7 +90,7 @@ SMALL_LOADED = {
     "solid_mesh.sector_half_angle": 0.14,
     "solid_mesh.coarse_arc": 0.4,
     "solid_mesh.arc_growth": 3.0,
-    "solid_mesh.road_step": 0.0025,
+    "solid_mesh.road_step": 0.007,
     "operating.vertical_load": 1000.0,
 }
 
