@@ -262,8 +262,9 @@ CUTOFF_FACTOR = 2.5
 
 @dataclass(frozen=True, eq=False)
 class ReducedFootprint:
-    """The linearised tire on a Craig-Bampton basis: its boundary (each contact node's vertical DOF,
-    then the rim moving vertically as one) and interior coordinates.
+    """The linearised tire on a Craig-Bampton basis: its boundary (each contact node's held DOF moved
+    as the road under it rises by one, vertical on the flat road and along the drum's normal by
+    ``n_z`` on a drum; then the rim moving vertically as one) and interior coordinates.
 
     Attributes
     ----------

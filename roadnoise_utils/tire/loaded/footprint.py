@@ -115,7 +115,7 @@ def loaded_footprint(tire: LoadedTire, state: StaticState, load: float | None = 
     """The loaded state as every model's :class:`~roadnoise_utils.tire.model.Footprint` on its road.
 
     The deflection is the road's lift from touching the inflated tire; the contact pressure at a
-    node is its road reaction over its shape function's area (the pressure a uniform field would
+    node is its road reaction along the road's normal over its shape function's area (the pressure a uniform field would
     give it: no checkerboard of the quadratic faces' 1/6 : 2/3 split); ``K_v`` is the condensed
     tangent's, the contact set held. ``load`` (N): the load case the state was loaded to (its
     ``force_balance`` compares the rim's reaction with it); default the road's force.
@@ -130,8 +130,15 @@ def loaded_footprint(tire: LoadedTire, state: StaticState, load: float | None = 
         hub_force=float(-state.reactions[tire.fixed[tire.fixed % 3 == 2]].sum()),
         vertical_stiffness=vertical_stiffness(tire, state),
         tasselli=tasselli,
-        node_pressure=state.reactions[3 * state.contact + 2] / areas,
+        node_pressure=_normal_force(state) / areas,
     )
+
+
+def _normal_force(state: StaticState) -> np.ndarray:
+    """Each contact node's force from the road along the road's normal (N): vertical on the flat road,
+    radial on a drum (where a node's force has its normal's small fore-aft part too)."""
+    force = state.reactions.reshape(-1, 3)[state.contact]
+    return np.sign(force[:, 2]) * np.hypot(force[:, 0], force[:, 2])
 
 
 def frf_result(frf: LoadedFootprintFRF, tasselli: Tasselli) -> FRFResult:
