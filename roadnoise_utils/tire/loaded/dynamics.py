@@ -212,10 +212,10 @@ def footprint_frf_direct(linearised: LinearisedTire, freqs: np.ndarray) -> Loade
     """
     freqs = _check_freqs(freqs)
     lin = linearised
-    parts = lin.parts()
+    parts, boundaries = lin.parts(), lin.boundaries()
     free_parts = [part[lin.free][:, lin.free] for part in parts]
-    coupling = [(part[lin.free] @ boundary).toarray() for part, boundary in zip(parts, lin.boundaries())]
-    hub_rows = [(part[lin.hub] @ boundary).toarray().sum(axis=0) for part, boundary in zip(parts, lin.boundaries())]
+    coupling = [(part[lin.free] @ boundary).toarray() for part, boundary in zip(parts, boundaries)]
+    hub_rows = [(part[lin.hub] @ boundary).toarray().sum(axis=0) for part, boundary in zip(parts, boundaries)]
     hub_free = [np.asarray(part[lin.hub][:, lin.free].sum(axis=0)).ravel() for part in parts]
     banded = banded_sum(free_parts)
     out = []
@@ -340,17 +340,20 @@ def reduce(linearised: LinearisedTire, f_max: float, cutoff_factor: float = CUTO
     basis[:, :n_b] = shapes
     basis[np.ix_(lin.free, np.arange(n_b, basis.shape[1]))] = interior
 
-    def project(matrix: sp.spmatrix, on: np.ndarray = basis) -> np.ndarray:
-        out = on.T @ (matrix @ on)
+    def project(matrix: sp.spmatrix) -> np.ndarray:
+        out = basis.T @ (matrix @ basis)
         return 0.5 * (out + out.T)
 
-    slid = basis.copy()
-    slid[:, :n_b] += lin.road_slide.toarray()
+    # the curvature term lives on the contact nodes' tangent DOF alone; it sees the basis with the drum's slide
+    rows = np.unique(lin.curvature.nonzero()[0])
+    slid = basis[rows]
+    slid[:, :n_b] += lin.road_slide[rows].toarray()
+    curvature = slid.T @ (lin.curvature[rows][:, rows] @ slid)
     return ReducedFootprint(
         compounds={name: project(part) for name, part in lin.compounds.items()},
         pneumatic=project(lin.pneumatic),
         mass=project(lin.mass),
-        curvature=project(lin.curvature, slid),
+        curvature=0.5 * (curvature + curvature.T),
         n_boundary=n_b,
         n_modes=modes.shape[1],
         laws=lin.laws,

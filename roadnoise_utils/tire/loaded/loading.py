@@ -14,8 +14,7 @@ from scipy.optimize import brentq
 from ... import guards
 from ..surface import RoadSurface
 from . import road_contact
-from .road_contact import FLAT
-from .statics import LoadedTire, StaticState
+from .statics import FLAT_ROAD, LoadedTire, StaticState
 
 #: The road's force must equal the load to this fraction (0.5 uN at 4.5 kN): below the footprint's force
 #: balance of 1e-9, above the Newton iterations' round-off (the hub and the road agree to ~1e-10).
@@ -29,7 +28,7 @@ def load_on_road(
     inflated: StaticState,
     load: float,
     road_step: float,
-    road: RoadSurface = FLAT,
+    road: RoadSurface = FLAT_ROAD,
     start: StaticState | None = None,
 ) -> StaticState:
     """The inflated tire pressed on ``road`` (the flat road or a drum) until the road carries ``load`` (N).
@@ -78,7 +77,7 @@ def load_on_road(
 
 
 def load_sweep(
-    tire: LoadedTire, inflated: StaticState, loads: list[float], road_step: float, road: RoadSurface = FLAT
+    tire: LoadedTire, inflated: StaticState, loads: list[float], road_step: float, road: RoadSurface = FLAT_ROAD
 ) -> list[StaticState]:
     """The tire at each of ``loads`` (N, increasing) on ``road``, each loading continuing from the last
     state (:func:`load_on_road`): one pass of road steps for the whole load-deflection curve."""
@@ -103,9 +102,7 @@ def _pressed(
     """One road position from ``start``; the statics' errors restated in terms of the load case."""
     try:  # only the final state's stability is checked
         return road_contact.press_on_road(tire, inflated, lift, road, steps=1, start=start, check_stability=False)
-    except ValueError as exc:
-        if "the tire bottoms" not in str(exc):
-            raise
+    except road_contact.TireBottoms:
         raise ValueError(
             f"load = {load:g} N: the tire carries at most {start.road_force:.0f} N before the road reaches the rim "
             f"at {inflated.pressure / 1e5:g} bar (a lift of {start.road_lift * 1e3:.1f} mm): lower the load or raise "

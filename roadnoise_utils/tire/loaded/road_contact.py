@@ -22,9 +22,10 @@ import scipy.sparse as sp
 
 from ... import guards
 from ..banded import BandedCholesky
-from ..surface import RoadSurface, make_road
+from ..surface import RoadSurface
 from . import pressure
 from .statics import (
+    FLAT_ROAD,
     GAP_TOLERANCE,
     LoadedTire,
     LocalSystem,
@@ -35,7 +36,9 @@ from .statics import (
     solve_tangent,
 )
 
-FLAT = make_road("flat")
+
+class TireBottoms(ValueError):
+    """The road would reach the rim: the lift asked for is more than the tire's section can give."""
 
 
 def tread_heights(tire: LoadedTire, u: np.ndarray) -> np.ndarray:
@@ -135,7 +138,7 @@ def press_on_road(
     tire: LoadedTire,
     inflated: StaticState,
     lift: float,
-    road: RoadSurface = FLAT,
+    road: RoadSurface = FLAT_ROAD,
     steps: int = 4,
     start: StaticState | None = None,
     check_stability: bool = True,
@@ -156,7 +159,7 @@ def press_on_road(
     touch = float(tread_heights(tire, inflated.u).min())
     rim = float(tire.mesh.coordinates[tire.mesh.bead_nodes, 2].min()) - touch  # the rim's lowest point above the road
     if lift >= rim:
-        raise ValueError(
+        raise TireBottoms(
             f"lift = {lift!r} m: valid range is (0, {rim:.4g}) m; the road would reach the rim (the tire bottoms)"
         )
     if start is not None and start.pressure != inflated.pressure:

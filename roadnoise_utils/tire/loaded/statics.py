@@ -1,4 +1,4 @@
-"""Large-deformation statics of the loaded tire: inflation, then the road pressed against it.
+"""Large-deformation statics of the loaded tire: the potential, its Newton iterations on the supports, inflation.
 
 Equilibrium is the stationary point of the total potential energy
 
@@ -10,14 +10,15 @@ cavity volume (:mod:`.pressure`), the beads held on the rim. Newton's method sol
 stiffness) and a backtracking line search on :math:`\\Pi` (Armijo), so a step never raises the
 energy (Wriggers, *Nonlinear Finite Element Methods*, 2008, ch. 5).
 
-Contact with the flat road is frictionless and one-sided on the tread surface's nodes: a node
-below the road is held on it (its vertical displacement prescribed), a held node that the road
-pulls is released. The active set is updated inside Newton's iterations once the out-of-balance
-force is small (a primal-dual active set: Hintermüller, Ito & Kunisch, SIAM J. Optim. 13, 2003);
-once it no longer changes, the iterations are those of Newton's method on a fixed set of
-constraints and converge quadratically. Newly held nodes reach the road by a predictor, the
-free DOF following by the tangent, so a road step of millimetres does not distort the elements at
-the footprint's edge alone; no step is accepted that inverts a point of the mesh.
+What holds the tire is a :class:`Supports`: the rim alone (:class:`Rim`, the inflation) or the rim
+and a road (:class:`.road_contact.RoadContact`: frictionless one-sided contact with the flat road or
+a drum, its active set updated inside Newton's iterations once the out-of-balance force is small).
+A support may hold a DOF along a direction of its own (a drum's normal): each iteration is solved
+in the supports' frame (:class:`LocalSystem`). Held DOF that must move to meet their constraints
+move by a predictor, the free DOF following by the tangent, so a road step of millimetres does not
+distort the elements at the footprint's edge alone; no step is accepted that inverts a point of
+the mesh. Once the held set no longer changes, the iterations are Newton's on fixed constraints
+and converge quadratically.
 
 Each Newton iteration solves the tangent of the free DOF by a banded Cholesky factor
 (:class:`~roadnoise_utils.tire.banded.BandedCholesky`), about two rings of nodes wide.

@@ -48,17 +48,15 @@ def test_a_load_the_tire_cannot_carry_or_a_step_newton_cannot_follow_is_refused_
 
         return pressed
 
-    bottoms = ValueError(
-        "lift = 0.0075 m: valid range is (0, 0.0075) m; the road would reach the rim (the tire bottoms)"
-    )
-    monkeypatch.setattr(road_contact, "press_on_road", bottoms_beyond(0.006, bottoms))
+    bottoms = road_contact.TireBottoms("lift = 0.002 m: valid range is (0, 0.0015) m; the road would reach the rim")
+    monkeypatch.setattr(road_contact, "press_on_road", bottoms_beyond(0.0015, bottoms))
     with pytest.raises(ValueError, match=r"load = 5000 N: the tire carries at most \d+ N before the road reaches"):
-        loading.load_on_road(tire, inflated, 5000.0, 0.005)
-    monkeypatch.setattr(road_contact, "press_on_road", bottoms_beyond(0.006, RuntimeError("did not converge")))
+        loading.load_on_road(tire, inflated, 5000.0, 0.001)
+    monkeypatch.setattr(road_contact, "press_on_road", bottoms_beyond(0.0015, RuntimeError("did not converge")))
     with pytest.raises(
-        ValueError, match=r"road_step = 0.005 m: the static solve did not follow a road step from 5.00 mm"
+        ValueError, match=r"road_step = 0.001 m: the static solve did not follow a road step from 1.00 mm"
     ):
-        loading.load_on_road(tire, inflated, 5000.0, 0.005)
+        loading.load_on_road(tire, inflated, 5000.0, 0.001)
     monkeypatch.undo()
     for load, step, name in ((1000.0, 0.0, "road_step"), (100.0, 0.001, "load"), (np.nan, 0.001, "load")):
         with pytest.raises(ValueError, match=name):
