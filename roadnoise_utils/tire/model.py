@@ -199,6 +199,17 @@ class FRFResult:
     H_points: np.ndarray | None
     method: str
 
+    def take(self, index: np.ndarray) -> FRFResult:
+        """The responses at the frequencies ``freqs[index]`` (an index array into :attr:`freqs`)."""
+        return dataclasses.replace(
+            self,
+            freqs=self.freqs[index],
+            H=self.H[:, index],
+            H_tot=self.H_tot[index],
+            G_H=None if self.G_H is None else self.G_H[index],
+            H_points=None if self.H_points is None else self.H_points[:, index],
+        )
+
     @property
     def H_sum(self) -> np.ndarray:
         """:math:`\\sum_i H_i` (N/m), the left side of the paper's Eq. (i)."""

@@ -94,11 +94,4 @@ class FRFFileModel(TireModel):
                 f"freqs: {freqs[off][:5].tolist()} Hz are not frequencies of the file's FRFs "
                 f"({frfs.freqs[0]:g}-{frfs.freqs[-1]:g} Hz, {frfs.freqs.size} frequencies); nothing is interpolated"
             )
-        return FRFResult(
-            freqs=frfs.freqs[pick],
-            H=frfs.H[:, pick],
-            H_tot=frfs.H_tot[pick],
-            G_H=None if frfs.G_H is None else frfs.G_H[pick],
-            H_points=None,
-            method=frfs.method,
-        )
+        return frfs.take(pick)

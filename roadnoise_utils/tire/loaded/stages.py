@@ -65,15 +65,7 @@ def loaded_frfs(spec: LoadedSpec, case: LoadCase, freqs: np.ndarray | None = Non
     freqs = DEFAULT_FREQS if freqs is None else np.asarray(freqs, dtype=float)
     if not np.array_equal(freqs, DEFAULT_FREQS) and np.all(np.isin(freqs, DEFAULT_FREQS)):
         full = loaded_frfs(spec, case)
-        pick = np.searchsorted(full.freqs, freqs)
-        return FRFResult(
-            freqs=full.freqs[pick],
-            H=full.H[:, pick],
-            H_tot=full.H_tot[pick],
-            G_H=full.G_H[pick],
-            H_points=full.H_points[:, pick],
-            method=full.method,
-        )
+        return full.take(np.searchsorted(full.freqs, freqs))
     state = loaded_state(spec, case)
     tasselli = loaded_footprint(spec, case).tasselli
 
