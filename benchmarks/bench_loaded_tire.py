@@ -54,13 +54,13 @@ import roadnoise_utils as ru
 from roadnoise_utils.experiments.cleat import quasi_static_force, row_influence
 from roadnoise_utils.experiments.paper_defaults import cleat_input
 from roadnoise_utils.guards import RoadnoiseWarning
-from roadnoise_utils.tire.banded import BandedCholesky
 from roadnoise_utils.tire.cross_section import static as section_static
 from roadnoise_utils.tire.cross_section.checks import harmonic_frequencies
 from roadnoise_utils.tire.cross_section.operators import harmonic_operators
 from roadnoise_utils.tire.loaded import dynamics, footprint, linearised, road_contact, solid, statics
 from roadnoise_utils.tire.loaded.mesh import graded_arcs
 from roadnoise_utils.tire.model import tire_model
+from roadnoise_utils.tire.symmetric_factor import SymmetricFactor
 
 LOADS = (1000.0, 2000.0, 3000.0, 4512.0)
 
@@ -123,7 +123,7 @@ def compare_modes(spec, n_arcs: int, count: int = 40) -> None:
     found = {}
     for name, k in tangents.items():
         k_free = k[free][:, free]
-        inverse = spla.LinearOperator(k_free.shape, matvec=BandedCholesky(k_free).solve, dtype=float)
+        inverse = spla.LinearOperator(k_free.shape, matvec=SymmetricFactor(k_free).solve, dtype=float)
         values, vectors = spla.eigsh(k_free.tocsc(), k=count, M=mass, sigma=0.0, OPinv=inverse)
         full = np.zeros((tire.n_dof, count))
         full[free] = vectors

@@ -6,8 +6,10 @@ in that natural order fills the whole last block of columns; reordered by revers
 Cuthill-McKee (:func:`scipy.sparse.csgraph.reverse_cuthill_mckee`) the closed ring becomes a
 band of about two rings of nodes, and LAPACK's banded Cholesky
 (:func:`scipy.linalg.cholesky_banded`) solves it several times faster than SuperLU: the ring
-tire's 16 200 DOF at 600 elements (a band of ~80) in 0.7 ms against 3.6 ms per right-hand side,
-the loaded tire's 23 400 free DOF (a band of 1703) factorised in 4.6 s against SuperLU's 38 s.
+tire's 16 200 DOF at 600 elements (a band of ~80) in 0.7 ms against 3.6 ms per right-hand side.
+Where the ring is many nodes around (the loaded tire: 255 DOF per ring, a band of 1703), a
+minimum-degree order that cuts the ring does better
+(:class:`~roadnoise_utils.tire.symmetric_factor.SymmetricFactor`).
 """
 
 from __future__ import annotations

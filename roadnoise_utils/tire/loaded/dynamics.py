@@ -30,7 +30,8 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from ... import guards
-from ..banded import BandedCholesky, banded_sum
+from ..banded import banded_sum
+from ..symmetric_factor import SymmetricFactor
 from . import pressure, road_contact, solid
 from .statics import LoadedTire, StaticState
 
@@ -371,12 +372,9 @@ def _boundary_columns(lin: LinearisedTire) -> sp.csc_matrix:
     return sp.csc_matrix((values, (rows, cols)), shape=(n_dof, n_road + 1))
 
 
-def _factor(stiffness: sp.spmatrix):
-    """A factor with ``solve`` of a real symmetric tangent: banded Cholesky, SuperLU if it is not definite."""
-    try:
-        return BandedCholesky(stiffness)
-    except np.linalg.LinAlgError:
-        return spla.splu(sp.csc_matrix(stiffness))
+def _factor(stiffness: sp.spmatrix) -> SymmetricFactor:
+    """The factor of a real symmetric tangent, definite or not (:class:`~roadnoise_utils.tire.symmetric_factor.SymmetricFactor`)."""
+    return SymmetricFactor(stiffness, require_definite=False)
 
 
 def _modes_below(stiffness: sp.spmatrix, mass: sp.spmatrix, factor, omega_cut: float) -> np.ndarray:

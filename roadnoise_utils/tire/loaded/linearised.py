@@ -28,7 +28,7 @@ import scipy.sparse as sp
 
 from ... import guards
 from ..active_set import active_set, held_contact
-from ..banded import BandedCholesky
+from ..symmetric_factor import SymmetricFactor
 from . import pressure, solid
 from .road_contact import tread_heights
 from .statics import LoadedTire, StaticState, residual_and_tangent
@@ -118,7 +118,7 @@ def round_linearisation(tire: LoadedTire, p: float | None = None) -> RoundLinear
     free = np.setdiff1d(np.arange(tire.n_dof), tire.fixed)
     inflation = np.zeros(tire.n_dof)
     load = pressure.pressure_load(tire.mesh, tire.surface, round_tire, p)
-    inflation[free] = BandedCholesky(stiffness[free][:, free]).solve(load[free])
+    inflation[free] = SymmetricFactor(stiffness[free][:, free]).solve(load[free])
     tangent = solid.prestressed_tangent(tire.groups, inflation, tire.n_dof) - pressure.pressure_stiffness(
         tire.mesh, tire.surface, round_tire, p
     )
@@ -130,8 +130,8 @@ def contact_compliance(
 ) -> ContactCompliance:
     """The tread's vertical compliance about ``state`` (the rim held, every other node free), see :class:`ContactCompliance`.
 
-    ``tangent``: the stiffness to invert (N/m); default the exact tangent at ``state``. One banded
-    Cholesky factor and one solve per candidate node.
+    ``tangent``: the stiffness to invert (N/m); default the exact tangent at ``state``. One symmetric
+    factor and one solve per candidate node.
     """
     depth = guards.real("depth", depth, 0.0, 0.5, lo_open=True, unit="m")
     heights = tread_heights(tire, state.u)
@@ -144,7 +144,7 @@ def contact_compliance(
     rows = np.searchsorted(free, 3 * nodes + 2)
     unit = np.zeros((free.size, nodes.size))
     unit[rows, np.arange(nodes.size)] = 1.0
-    matrix = BandedCholesky(k[free][:, free]).solve(unit)[rows]
+    matrix = SymmetricFactor(k[free][:, free]).solve(unit)[rows]
     return ContactCompliance(
         nodes=nodes, gap=heights[candidate] - heights.min(), matrix=0.5 * (matrix + matrix.T), depth=depth
     )

@@ -17,8 +17,10 @@ is interpolated from the nodes, which lie on the exact surfaces of revolution.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
+import scipy.sparse as sp
 
 from ..cross_section.mesh import SectionMesh
 
@@ -71,11 +73,61 @@ class SolidMesh:
         """Index of ``section_node`` on ``ring``."""
         return np.asarray(ring) * self.section.n_nodes + np.asarray(section_node)
 
+    @cached_property
+    def scatter(self) -> Scatter:
+        """Where the entries of every element's matrix land in the mesh's sparse matrices (built once)."""
+        return Scatter.of(self.elements, self.n_dof)
+
     @property
     def bead_nodes(self) -> np.ndarray:
         """The nodes of both bead stations on every ring (clamped to the rim)."""
         rings = np.arange(self.theta.size)
         return np.ravel(self.node(rings[:, None], self.section.bead_nodes[None, :]))
+
+
+@dataclass(frozen=True, eq=False)
+class Scatter:
+    """The sparse pattern (CSR) of a mesh's matrices and where each element matrix entry lands in it.
+
+    Assembling by this map is one weighted ``numpy.bincount`` of the element entries into the
+    pattern's values, instead of a coordinate list sorted and summed at every assembly (the statics
+    assemble a tangent at every Newton iteration).
+
+    Attributes
+    ----------
+    indptr, indices : ndarray of int
+        The CSR pattern: every DOF pair two elements share or one element couples.
+    positions : ndarray of int (n_el, 81 * 81)
+        Index into the pattern's values of each element's entry ``(3 a + i, 3 b + j)``, row-major.
+    n_dof : int
+    """
+
+    indptr: np.ndarray
+    indices: np.ndarray
+    positions: np.ndarray
+    n_dof: int
+
+    @classmethod
+    def of(cls, elements: np.ndarray, n_dof: int) -> Scatter:
+        """The scatter of 27-node ``elements`` (n_el, 27) over ``n_dof`` DOF (three per node)."""
+        dofs = (3 * elements[:, :, None] + np.arange(3)).reshape(elements.shape[0], -1)
+        keys = (dofs[:, :, None].astype(np.int64) * n_dof + dofs[:, None, :]).reshape(dofs.shape[0], -1)
+        pattern = np.unique(keys)  # sorted: row-major, the CSR order
+        rows = pattern // n_dof
+        return cls(
+            indptr=np.searchsorted(rows, np.arange(n_dof + 1)).astype(np.int32),
+            indices=(pattern % n_dof).astype(np.int32),
+            positions=np.searchsorted(pattern, keys).astype(np.int32),
+            n_dof=n_dof,
+        )
+
+    def matrix(self, elements: list[np.ndarray], blocks: list[np.ndarray]) -> sp.csr_matrix:
+        """The sparse matrix of the element matrices ``blocks`` (each (m, 81, 81), real) of the ``elements``
+        (each (m,) indices), summed where they share DOF."""
+        positions = np.concatenate([self.positions[e].ravel() for e in elements])
+        values = np.concatenate([np.asarray(b, float).ravel() for b in blocks])
+        data = np.bincount(positions, weights=values, minlength=self.indices.size)
+        return sp.csr_matrix((data, self.indices, self.indptr), shape=(self.n_dof, self.n_dof))
 
 
 def graded_arcs(

@@ -21,8 +21,8 @@ import numpy as np
 import scipy.sparse as sp
 
 from ... import guards
-from ..banded import BandedCholesky
 from ..surface import RoadSurface
+from ..symmetric_factor import SymmetricFactor
 from . import pressure
 from .statics import (
     FLAT_ROAD,
@@ -218,13 +218,13 @@ def is_stable(tire: LoadedTire, state: StaticState, system: LocalSystem | None =
 
     Newton's method finds any stationary point; a saddle is an equilibrium the tire would leave
     (e.g. the cord plies compressed in the footprint buckling). The tangent of the free DOF (in the
-    contact's frame, with its curvature term) is positive definite at a minimum: its Cholesky
-    factor exists. ``system``: the last Newton iteration's, if at hand.
+    contact's frame, with its curvature term) is positive definite at a minimum: every pivot of its
+    symmetric factor is positive (:class:`~roadnoise_utils.tire.symmetric_factor.SymmetricFactor`). ``system``: the last Newton iteration's, if at hand.
     """
     system = local_tangent(tire, state) if system is None else system
     free = _free(system)
     try:
-        BandedCholesky(system.tangent[free][:, free])
+        SymmetricFactor(system.tangent[free][:, free])
     except np.linalg.LinAlgError:
         return False
     return True

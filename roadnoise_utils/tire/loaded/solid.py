@@ -36,7 +36,7 @@ from .material import (
     rubber_lame,
     stress_and_tangent,
 )
-from .mesh import SolidMesh
+from .mesh import Scatter, SolidMesh
 
 #: ``PAIRS[a, j, k] = 1`` where the Voigt strain ``a`` holds ``F_ij dN/dX_k`` (shears: both orders).
 #: Gauss points around each arc for the stiffness: three, exact for the quadratic arcs. Measured on
@@ -100,6 +100,8 @@ class ElementGroup:
         Over ``(m, q)``, in the global axes.
     arc_points : int
         Gauss points around each arc.
+    scatter : Scatter
+        The mesh's sparse pattern, shared by its groups (:attr:`.mesh.SolidMesh.scatter`).
     """
 
     elements: np.ndarray
@@ -111,6 +113,7 @@ class ElementGroup:
     compound: np.ndarray
     materials: PointMaterials
     arc_points: int
+    scatter: Scatter
 
 
 def element_groups(mesh: SolidMesh, spec: CrossSectionSpec, arc_points: int = ARC_POINTS) -> list[ElementGroup]:
@@ -166,6 +169,7 @@ def element_groups(mesh: SolidMesh, spec: CrossSectionSpec, arc_points: int = AR
                 compound=np.repeat(pts.compound[sel], arc_points),
                 materials=materials,
                 arc_points=arc_points,
+                scatter=mesh.scatter,
             )
         )
     return groups
@@ -257,11 +261,11 @@ def element_tangent(group: ElementGroup, b: np.ndarray, d: np.ndarray, stress: n
 
 
 def assemble_blocks(groups: list[ElementGroup], blocks: list[np.ndarray], n_dof: int) -> sp.csr_matrix:
-    """Global sparse matrix of the element matrices ``blocks`` (one array per group)."""
-    rows = [np.broadcast_to(g.dofs[:, :, None], k_e.shape).ravel() for g, k_e in zip(groups, blocks)]
-    cols = [np.broadcast_to(g.dofs[:, None, :], k_e.shape).ravel() for g, k_e in zip(groups, blocks)]
-    data = np.concatenate([k_e.ravel() for k_e in blocks])
-    return sp.csr_matrix((data, (np.concatenate(rows), np.concatenate(cols))), shape=(n_dof, n_dof))
+    """Global sparse matrix of the element matrices ``blocks`` (one array per group), on the mesh's pattern."""
+    scatter = groups[0].scatter
+    if scatter.n_dof != n_dof or any(group.scatter is not scatter for group in groups):
+        raise ValueError(f"groups: give groups of one mesh of n_dof = {n_dof} DOF (solid.element_groups)")
+    return scatter.matrix([group.elements for group in groups], blocks)
 
 
 def assemble(groups: list[ElementGroup], u: np.ndarray, n_dof: int) -> tuple[np.ndarray, sp.csr_matrix]:

@@ -20,8 +20,8 @@ distort the elements at the footprint's edge alone; no step is accepted that inv
 the mesh. Once the held set no longer changes, the iterations are Newton's on fixed constraints
 and converge quadratically.
 
-Each Newton iteration solves the tangent of the free DOF by a banded Cholesky factor
-(:class:`~roadnoise_utils.tire.banded.BandedCholesky`), about two rings of nodes wide.
+Each Newton iteration solves the tangent of the free DOF by its sparse symmetric factor
+(:class:`~roadnoise_utils.tire.symmetric_factor.SymmetricFactor`).
 """
 
 from __future__ import annotations
@@ -31,13 +31,12 @@ from typing import Protocol
 
 import numpy as np
 import scipy.sparse as sp
-import scipy.sparse.linalg as spla
 
 from ... import guards
-from ..banded import BandedCholesky
 from ..cross_section.geometry import section_mesh
 from ..cross_section.spec import CrossSectionSpec
 from ..surface import RoadSurface
+from ..symmetric_factor import SymmetricFactor
 from . import material, pressure, solid
 from .mesh import SolidMesh, sweep
 
@@ -176,17 +175,10 @@ class StaticState:
 
 
 def solve_tangent(matrix: sp.spmatrix, rhs: np.ndarray) -> np.ndarray:
-    """``matrix``:math:`^{-1}` ``rhs`` for a symmetric tangent of the free DOF.
-
-    The tangent of a stable state is positive definite: a banded Cholesky factor after reverse
-    Cuthill-McKee (:class:`~roadnoise_utils.tire.banded.BandedCholesky`; the closed circumference's
-    band is about two rings of nodes wide). A tangent that is not (an intermediate Newton state,
-    the pressure's load stiffness ahead of the pre-stress it builds) falls back to SuperLU.
-    """
-    try:
-        return BandedCholesky(matrix).solve(rhs)
-    except np.linalg.LinAlgError:
-        return spla.spsolve(sp.csc_matrix(matrix), rhs)
+    """``matrix``:math:`^{-1}` ``rhs`` for a symmetric tangent of the free DOF, definite or not (an
+    intermediate Newton state, the pressure's load stiffness ahead of the pre-stress it builds):
+    :class:`~roadnoise_utils.tire.symmetric_factor.SymmetricFactor`."""
+    return SymmetricFactor(matrix, require_definite=False).solve(rhs)
 
 
 @dataclass(frozen=True, eq=False)

@@ -1,0 +1,62 @@
+"""The sparse symmetric factor: solves as a dense solve, says whether the matrix is definite, refuses bad input."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import scipy.sparse as sp
+
+from roadnoise_utils.tire.banded import BandedCholesky
+from roadnoise_utils.tire.symmetric_factor import SymmetricFactor
+
+
+def closed_ring(n: int, shift: float = 0.0) -> sp.csr_matrix:
+    """A closed ring of springs to ground, 3 DOF per node coupled to the next two nodes: the loaded tire's pattern."""
+    rng = np.random.default_rng(n)
+    a = sp.lil_matrix((3 * n, 3 * n))
+    for node in range(n):
+        for other in (node + 1, node + 2):
+            block = rng.normal(size=(3, 3))
+            i, j = 3 * node, 3 * (other % n)
+            a[i : i + 3, j : j + 3] = block
+    a = a + a.T
+    return (a + sp.identity(3 * n) * (abs(a).sum(axis=1).max() + 1.0 - shift)).tocsr()
+
+
+def test_it_solves_as_the_dense_solve_and_the_banded_factor():
+    matrix = closed_ring(40)
+    rhs = np.random.default_rng(1).normal(size=(matrix.shape[0], 3))
+    factor = SymmetricFactor(matrix)
+    expected = np.linalg.solve(matrix.toarray(), rhs)
+    np.testing.assert_allclose(factor.solve(rhs), expected, rtol=0, atol=1e-12 * np.abs(expected).max())
+    np.testing.assert_allclose(factor.solve(rhs[:, 0]), BandedCholesky(matrix).solve(rhs[:, 0]), rtol=1e-12)
+    complex_rhs = rhs[:, 0] + 2j * rhs[:, 1]
+    np.testing.assert_allclose(factor.solve(complex_rhs), expected[:, 0] + 2j * expected[:, 1], atol=1e-11)
+    assert factor.definite
+
+
+def test_it_says_whether_the_matrix_is_definite_by_its_pivots():
+    """Shifted past its least eigenvalue the ring is indefinite: refused as definite, solved all the same."""
+    base = closed_ring(30)
+    least = np.linalg.eigvalsh(base.toarray())[0]
+    indefinite = base - sp.identity(base.shape[0]) * (least + 0.5 * abs(least))
+    with pytest.raises(np.linalg.LinAlgError, match="not positive definite"):
+        SymmetricFactor(indefinite)
+    factor = SymmetricFactor(indefinite, require_definite=False)
+    assert not factor.definite
+    rhs = np.arange(base.shape[0], dtype=float)
+    np.testing.assert_allclose(indefinite @ factor.solve(rhs), rhs, atol=1e-9 * np.abs(rhs).max())
+    assert SymmetricFactor(base - sp.identity(base.shape[0]) * 0.5 * least).definite
+
+
+def test_bad_input_is_refused_naming_it():
+    with pytest.raises(ValueError, match="square"):
+        SymmetricFactor(sp.csr_matrix(np.ones((3, 4))))
+    with pytest.raises(ValueError, match="symmetric"):
+        SymmetricFactor(sp.csr_matrix(np.array([[2.0, 1.0], [0.0, 2.0]])))
+    with pytest.raises(ValueError, match="real"):
+        SymmetricFactor(sp.csr_matrix(np.eye(3) * (1 + 1j)))
+    with pytest.raises(np.linalg.LinAlgError, match="singular|definite"):
+        SymmetricFactor(sp.csr_matrix(np.zeros((3, 3))), require_definite=False)
+    with pytest.raises(ValueError, match="rhs must have 120 rows"):
+        SymmetricFactor(closed_ring(40)).solve(np.ones(7))
