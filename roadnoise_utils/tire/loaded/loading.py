@@ -2,9 +2,11 @@
 
 The road contact (:mod:`.road_contact`) presses the road a given lift into the tire; a load case
 gives a force. :func:`load_on_road` raises the road in steps of ``road_step`` until the road's force
-passes the load, then finds the lift that carries it exactly by Brent's method, which keeps the
-root bracketed, each solve starting from the nearest equilibrium. A load the tire cannot carry before the road reaches the rim, a step the
-Newton iterations cannot follow and a lift that will not settle are refused by name.
+passes the load (a step the Newton iterations do not follow is halved, at most
+:data:`STEP_HALVINGS` times, the next step doubled back), then finds the lift that carries it
+exactly by Brent's method, which keeps the root bracketed, each solve starting from the nearest
+equilibrium. A load the tire cannot carry before the road reaches the rim, a step the Newton
+iterations cannot follow even halved and a lift that will not settle are refused by name.
 """
 
 from __future__ import annotations
@@ -21,6 +23,8 @@ from .statics import FLAT_ROAD, LoadedTire, StaticState
 LOAD_TOLERANCE = 1e-10
 #: Iterations of Brent's method allowed to land on the load once it is bracketed.
 MAX_LANDING_ITERATIONS = 20
+#: Times a road step the Newton iterations do not follow is halved before the load case is refused.
+STEP_HALVINGS = 2
 
 
 def load_on_road(
@@ -40,7 +44,7 @@ def load_on_road(
     load : float
         Vertical load (N), within :data:`roadnoise_utils.guards.LOAD_RANGE`.
     road_step : float
-        Road lift per load step (m): the steps the Newton iterations follow.
+        Road lift per load step (m): the steps the Newton iterations follow (halved where they do not).
     road : RoadSurface
         The flat road (default) or a drum.
     start : StaticState, optional
@@ -67,8 +71,16 @@ def load_on_road(
         raise ValueError(
             f"start carries {below.road_force:.0f} N, not less than load = {load:g} N: give a lighter start"
         )
+    step = road_step
     while above is None:
-        state = _pressed(tire, inflated, below.road_lift + road_step, below, load, road_step, road)
+        try:
+            state = _pressed(tire, inflated, below.road_lift + step, below, load, road_step, road)
+        except _NotFollowed:
+            if step <= road_step / 2**STEP_HALVINGS:
+                raise
+            step /= 2.0
+            continue
+        step = min(road_step, 2.0 * step)
         if state.road_force >= load:
             above = state
         else:
@@ -109,10 +121,14 @@ def _pressed(
             "the inflation pressure"
         ) from None
     except (RuntimeError, FloatingPointError) as exc:
-        raise ValueError(
-            f"road_step = {road_step:g} m: the static solve did not follow a road step from "
-            f"{start.road_lift * 1e3:.2f} mm ({exc}); give a shorter road step"
+        raise _NotFollowed(
+            f"road_step = {road_step:g} m: the static solve did not follow the road from {start.road_lift * 1e3:.2f} "
+            f"to {lift * 1e3:.2f} mm ({exc}); give a shorter road step"
         ) from None
+
+
+class _NotFollowed(ValueError):
+    """A road step the static solve did not follow (the message names ``road_step``)."""
 
 
 class _Landed(Exception):

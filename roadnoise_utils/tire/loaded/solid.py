@@ -20,6 +20,7 @@ count, so they are evaluated together (:class:`ElementGroup`).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 import scipy.sparse as sp
@@ -114,6 +115,13 @@ class ElementGroup:
     materials: PointMaterials
     arc_points: int
     scatter: Scatter
+
+    @cached_property
+    def voigt_gradients(self) -> np.ndarray:
+        r"""``G`` (m, q, 6 * 27, 3): :math:`G_{(r,a),j} = \sum_k P_{rjk} N_{a,k}` with :data:`PAIRS` ``P``, the
+        reference gradients arranged by Voigt strain (:func:`strain_operator`); built on first use."""
+        m, q = self.volume.shape
+        return np.einsum("rjk,mqak->mqraj", PAIRS, self.grad).reshape(m, q, 6 * 27, 3)
 
 
 def element_groups(mesh: SolidMesh, spec: CrossSectionSpec, arc_points: int = ARC_POINTS) -> list[ElementGroup]:
@@ -217,17 +225,15 @@ def deformation_gradient(group: ElementGroup, u: np.ndarray) -> np.ndarray:
     return f
 
 
-def strain_operator(f: np.ndarray, grad: np.ndarray) -> np.ndarray:
-    """``B`` (m, q, 6, 81) with :math:`\\delta E = B\\,\\delta u_e` (Voigt, engineering shears).
+def strain_operator(f: np.ndarray, group: ElementGroup) -> np.ndarray:
+    r"""``B`` (m, q, 6, 81) with :math:`\delta E = B\,\delta u_e` (Voigt, engineering shears) at the group's points.
 
-    Row ``(j, k)``, column ``3 a + i``: :math:`F_{ij} N_{a,k}`, plus :math:`F_{ik} N_{a,j}` for a shear.
+    Row ``(j, k)``, column ``3 a + i``: :math:`F_{ij} N_{a,k}`, plus :math:`F_{ik} N_{a,j}` for a shear;
+    that is :math:`B_{(r,a),i} = \sum_j G_{(r,a),j} F_{ij}` with the group's fixed
+    :attr:`ElementGroup.voigt_gradients` ``G``: one batched product per evaluation.
     """
-    b = np.empty(grad.shape[:2] + (6, 27, 3))
-    for row, (j, k) in enumerate(VOIGT):
-        b[..., row, :, :] = grad[..., :, k, None] * f[..., None, :, j]
-        if j != k:
-            b[..., row, :, :] += grad[..., :, j, None] * f[..., None, :, k]
-    return b.reshape(*b.shape[:3], 81)
+    b = np.matmul(group.voigt_gradients, np.swapaxes(f, -1, -2))  # (m, q, 6 * 27, 3)
+    return b.reshape(*f.shape[:2], 6, 81)
 
 
 def group_force_and_tangent(
@@ -236,7 +242,7 @@ def group_force_and_tangent(
     """Element internal forces (m, 81) and, with ``tangent``, stiffness matrices (m, 81, 81) at ``u``."""
     f = deformation_gradient(group, u)
     stress, d = stress_and_tangent(green_strain(f), group.materials)
-    b = strain_operator(f, group.grad)
+    b = strain_operator(f, group)
     m, q = group.volume.shape
     flat_b = b.reshape(m, q * 6, 81)
     force = np.matmul((stress * group.volume[..., None]).reshape(m, 1, q * 6), flat_b)[:, 0]
@@ -292,7 +298,7 @@ def prestressed_tangent(groups: list[ElementGroup], u: np.ndarray, n_dof: int) -
     blocks = []
     for group in groups:
         f = np.broadcast_to(np.eye(3), group.grad.shape[:2] + (3, 3))
-        b = strain_operator(f, group.grad)
+        b = strain_operator(f, group)
         _, d = stress_and_tangent(np.zeros(group.volume.shape + (6,)), group.materials)
         u_e = u[group.dofs].reshape(-1, 1, 81, 1)
         stress = np.matmul(d, np.matmul(b, u_e))[..., 0]

@@ -18,7 +18,7 @@ its own file names that file and says how fine the solids are and how the load i
     sector_half_angle = 0.28    # rad, half-angle of that sector
     coarse_arc = 0.06           # m, longest arc elsewhere
     arc_growth = 1.3            # -, largest length ratio of neighbouring arcs
-    road_step = 0.003           # m, road lift per load step
+    road_step = 0.006           # m, road lift per load step
 
 The section's element counts replace the construction file's ``[mesh]`` (the waveguide's,
 finer across the section: its cost grows with the section alone). Keys of :meth:`LoadedSpec.replace`

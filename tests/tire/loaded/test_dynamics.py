@@ -66,8 +66,8 @@ def test_mirrored_contact_nodes_transfer_the_same_force(tire, loaded, direct):
 
 
 def test_the_reduced_solve_is_the_direct_one_over_the_band(small_loaded, linearised, direct):
-    """The model's FRFs (Craig-Bampton with the modes at rest and at the band's storage moduli, and the
-    shapes' corrections, reduced for 0-400 Hz): within 1e-3 of the direct solve, relative to the
+    """The model's FRFs (Craig-Bampton with the modes at rest and their change at the band's storage
+    moduli, and the shapes' corrections, reduced for 0-400 Hz): within 1e-3 of the direct solve, relative to the
     largest transfer."""
     frf = small_loaded.fixed_hub_frfs(small_loaded.case(), FREQS)
     assert np.abs(frf.H_points.T - direct.hub).max() < 1e-3 * np.abs(direct.hub).max()

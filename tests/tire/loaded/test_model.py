@@ -41,10 +41,10 @@ def test_a_load_the_tire_cannot_carry_or_a_step_newton_cannot_follow_is_refused_
     press = road_contact.press_on_road
 
     def bottoms_beyond(limit: float, error: Exception):
-        def pressed(tire, inflated, lift, road, steps, start, check_stability):
+        def pressed(tire, inflated, lift, road, **options):
             if lift > limit:
                 raise error
-            return press(tire, inflated, lift, road, steps=steps, start=start, check_stability=check_stability)
+            return press(tire, inflated, lift, road, **options)
 
         return pressed
 
@@ -53,14 +53,33 @@ def test_a_load_the_tire_cannot_carry_or_a_step_newton_cannot_follow_is_refused_
     with pytest.raises(ValueError, match=r"load = 5000 N: the tire carries at most \d+ N before the road reaches"):
         loading.load_on_road(tire, inflated, 5000.0, 0.001)
     monkeypatch.setattr(road_contact, "press_on_road", bottoms_beyond(0.0015, RuntimeError("did not converge")))
-    with pytest.raises(
-        ValueError, match=r"road_step = 0.001 m: the static solve did not follow a road step from 1.00 mm"
+    with pytest.raises(  # 1 -> 2 mm refused, 1 -> 1.5 mm taken; 1.5 -> 2.5, 2 and 1.75 mm refused
+        ValueError, match=r"road_step = 0.001 m: the static solve did not follow the road from 1.50 to 1.75 mm"
     ):
         loading.load_on_road(tire, inflated, 5000.0, 0.001)
     monkeypatch.undo()
     for load, step, name in ((1000.0, 0.0, "road_step"), (100.0, 0.001, "load"), (np.nan, 0.001, "load")):
         with pytest.raises(ValueError, match=name):
             loading.load_on_road(tire, inflated, load, step)
+
+
+def test_a_road_step_newton_does_not_follow_is_halved_and_the_load_still_carried(tire, inflated, monkeypatch):
+    """Newton made to fail on any road step longer than 0.6 of ``road_step``: the load is reached in half
+    steps (that the state does not depend on the steps is tested with the load case's paths)."""
+    press = road_contact.press_on_road
+    lifts = []
+
+    def follows_half_steps(tire, inflated, lift, road, start, **options):
+        if lift - start.road_lift > 0.6 * 0.004:
+            raise RuntimeError("did not converge")
+        lifts.append(lift)
+        return press(tire, inflated, lift, road, start=start, **options)
+
+    monkeypatch.setattr(road_contact, "press_on_road", follows_half_steps)
+    halved = loading.load_on_road(tire, inflated, 600.0, 0.004)
+    monkeypatch.undo()
+    assert np.allclose(lifts[:2], [0.002, 0.004])  # the first two steps halved
+    assert abs(halved.road_force - 600.0) < 1e-7 and halved.stable
 
 
 def test_sticking_contact_and_what_it_lacks_are_refused_by_name(small_loaded, model_tire):
