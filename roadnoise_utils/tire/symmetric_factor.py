@@ -64,7 +64,6 @@ class SymmetricFactor:
         if asymmetry > SYMMETRY_TOLERANCE * scale:
             raise ValueError(f"matrix must be symmetric: asymmetry {asymmetry / scale:.2e} of its largest entry")
         self._matrix, self._pivoting = csc, False
-        self._norm = float(abs(csc).sum(axis=1).max()) if csc.nnz else 0.0
         try:
             self._lu = spla.splu(
                 csc, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0, options={"SymmetricMode": True}
@@ -102,9 +101,10 @@ class SymmetricFactor:
         x = self._lu.solve(rhs)
         if self.definite or self._pivoting:
             return x
+        norm = float(abs(self._matrix).sum(axis=1).max())  # infinity norm; only an indefinite matrix's solves need it
         for _ in range(REFINEMENTS + 1):
             residual = rhs - self._matrix @ x
-            bound = self._norm * np.abs(x).max(axis=0) + np.abs(rhs).max(axis=0)
+            bound = norm * np.abs(x).max(axis=0) + np.abs(rhs).max(axis=0)
             if np.all(np.abs(residual).max(axis=0) <= SOLVE_TOLERANCE * bound):
                 return x
             x = x + self._lu.solve(residual)
