@@ -12,19 +12,21 @@ import numpy as np
 import pytest
 
 import roadnoise_utils as ru
-from roadnoise_utils.tire.loaded import loading, road_contact, statics
+from roadnoise_utils.tire.loaded import loading, road_contact
 from roadnoise_utils.tire.loaded.spec import from_dict
 from roadnoise_utils.tire.model import NotApplicable
 
 
-def test_the_load_case_is_carried_by_a_minimum_whatever_path_the_load_takes(small_loaded, model_tire, model_state):
+def test_the_load_case_is_carried_by_a_minimum_whatever_path_the_load_takes(
+    small_loaded, model_tire, model_inflated, model_state
+):
     """The model's state (road steps from the inflated tire, then Brent's method) and the same load
     reached by a load sweep through 600 N (a landing, then road steps from it): the same equilibrium."""
     tire, loaded = model_tire, model_state
     footprint = small_loaded.load(small_loaded.case())
     assert abs(loaded.road_force / small_loaded.default_load - 1) < loading.LOAD_TOLERANCE and loaded.stable
     assert footprint.force_balance() < 1e-9 and footprint.deflection == loaded.road_lift
-    inflated = statics.inflate(tire)
+    inflated = model_inflated
     lighter, swept = loading.load_sweep(tire, inflated, [600.0, 1000.0], small_loaded.spec.solid_mesh.road_step)
     assert abs(lighter.road_force / 600.0 - 1) < loading.LOAD_TOLERANCE and lighter.stable
     assert np.array_equal(swept.contact, loaded.contact)
