@@ -23,6 +23,16 @@ from scipy.sparse.csgraph import reverse_cuthill_mckee
 SYMMETRY_TOLERANCE = 1e-12
 
 
+def require_symmetric(matrix: sp.sparray | sp.spmatrix) -> None:
+    """Refuse (``ValueError``) a sparse ``matrix`` that is not square or not symmetric beyond :data:`SYMMETRY_TOLERANCE`."""
+    if matrix.shape[0] != matrix.shape[1]:
+        raise ValueError(f"matrix must be square, got shape {matrix.shape}")
+    scale = float(abs(matrix).max()) if matrix.nnz else 1.0
+    asymmetry = float(abs(matrix - matrix.T).max()) if matrix.nnz else 0.0
+    if asymmetry > SYMMETRY_TOLERANCE * scale:
+        raise ValueError(f"matrix must be symmetric: asymmetry {asymmetry / scale:.2e} of its largest entry")
+
+
 class BandedCholesky:
     """:math:`A = L L^T` of a sparse symmetric positive definite ``matrix``, in a band after reordering.
 
@@ -39,12 +49,7 @@ class BandedCholesky:
     def __init__(self, matrix: sp.spmatrix | sp.sparray):
         csr = sp.csr_array(matrix)
         n = csr.shape[0]
-        if csr.shape != (n, n):
-            raise ValueError(f"matrix must be square, got shape {csr.shape}")
-        scale = float(abs(csr).max()) if csr.nnz else 1.0
-        asymmetry = float(abs(csr - csr.T).max()) if csr.nnz else 0.0
-        if asymmetry > SYMMETRY_TOLERANCE * scale:
-            raise ValueError(f"matrix must be symmetric: asymmetry {asymmetry / scale:.2e} of its largest entry")
+        require_symmetric(csr)
         self.order = reverse_cuthill_mckee(csr, symmetric_mode=True)
         upper = sp.triu(csr[self.order][:, self.order]).tocoo()
         self.bandwidth = int((upper.col - upper.row).max(initial=0))
