@@ -3,7 +3,8 @@
 The road contact (:mod:`.road_contact`) presses the road a given lift into the tire; a load case
 gives a force. :func:`load_on_road` raises the road in steps of ``road_step`` until the road's force
 passes the load (a step the Newton iterations do not follow is halved, at most
-:data:`STEP_HALVINGS` times, the next step doubled back), then finds the lift that carries it
+:data:`STEP_HALVINGS` times, the next step doubled back; near the load, a step no longer than
+the state's secant stiffness asks for, so that the first state past the load is close to it), then finds the lift that carries it
 exactly by Brent's method, which keeps the root bracketed, each solve starting from the nearest
 equilibrium. A load the tire cannot carry before the road reaches the rim, a step the Newton
 iterations cannot follow even halved and a lift that will not settle are refused by name.
@@ -25,6 +26,10 @@ LOAD_TOLERANCE = 1e-10
 MAX_LANDING_ITERATIONS = 20
 #: Times a road step the Newton iterations do not follow is halved before the load case is refused.
 STEP_HALVINGS = 2
+#: A step from a state carrying part of the load is at most this times the lift its secant stiffness (force over
+#: lift from touching) asks for: a tire's force grows faster than its lift, so the secant's lift passes the load
+#: a little and brackets it closely.
+SECANT_OVERSHOOT = 1.1
 
 
 def load_on_road(
@@ -71,16 +76,18 @@ def load_on_road(
         raise ValueError(
             f"start carries {below.road_force:.0f} N, not less than load = {load:g} N: give a lighter start"
         )
-    step = road_step
+    step, failures = road_step, 0
     while above is None:
+        step = min(step, _secant_step(below, load))
         try:
             state = _pressed(tire, inflated, below.road_lift + step, below, load, road_step, road)
         except _NotFollowed:
-            if step <= road_step / 2**STEP_HALVINGS:
+            failures += 1
+            if failures > STEP_HALVINGS:
                 raise
             step /= 2.0
             continue
-        step = min(road_step, 2.0 * step)
+        failures, step = 0, min(road_step, 2.0 * step)
         if state.road_force >= load:
             above = state
         else:
@@ -89,16 +96,22 @@ def load_on_road(
 
 
 def load_sweep(
-    tire: LoadedTire, inflated: StaticState, loads: list[float], road_step: float, road: RoadSurface = FLAT_ROAD
+    tire: LoadedTire,
+    inflated: StaticState,
+    loads: list[float],
+    road_step: float,
+    road: RoadSurface = FLAT_ROAD,
+    start: StaticState | None = None,
 ) -> list[StaticState]:
     """The tire at each of ``loads`` (N, increasing) on ``road``, each loading continuing from the last
-    state (:func:`load_on_road`): one pass of road steps for the whole load-deflection curve."""
+    state (:func:`load_on_road`): one pass of road steps for the whole load-deflection curve, from the
+    inflated tire or from ``start`` (a state carrying less than the first load: a sweep continued)."""
     loads = [guards.real("loads", load, *guards.LOAD_RANGE, unit="N") for load in loads]
     if not loads or any(b <= a for a, b in zip(loads, loads[1:])):
         raise ValueError(f"loads = {loads}: give one or more strictly increasing loads (N)")
     states: list[StaticState] = []
     for load in loads:
-        states.append(load_on_road(tire, inflated, load, road_step, road, start=states[-1] if states else None))
+        states.append(load_on_road(tire, inflated, load, road_step, road, start=states[-1] if states else start))
     return states
 
 
@@ -125,6 +138,14 @@ def _pressed(
             f"road_step = {road_step:g} m: the static solve did not follow the road from {start.road_lift * 1e3:.2f} "
             f"to {lift * 1e3:.2f} mm ({exc}); give a shorter road step"
         ) from None
+
+
+def _secant_step(state: StaticState, load: float) -> float:
+    """The lift (m) from ``state`` to ``load`` at ``state``'s secant stiffness, times :data:`SECANT_OVERSHOOT`
+    (infinite from the inflated tire, which carries nothing)."""
+    if state.road_force <= 0.0 or state.road_lift <= 0.0:
+        return float("inf")
+    return SECANT_OVERSHOOT * (load - state.road_force) * state.road_lift / state.road_force
 
 
 class _NotFollowed(ValueError):

@@ -20,21 +20,36 @@ from roadnoise_utils.tire.model import NotApplicable
 def test_the_load_case_is_carried_by_a_minimum_whatever_path_the_load_takes(
     small_loaded, model_tire, model_inflated, model_state
 ):
-    """The model's state (road steps from the inflated tire, then Brent's method) and the same load
-    reached by a load sweep through 600 N (a landing, then road steps from it): the same equilibrium."""
+    """The model's state (one 7 mm road step from the inflated tire, then Brent's method), pressed a
+    tenth further and lifted back: the same equilibrium, its contact set and every displacement."""
     tire, loaded = model_tire, model_state
     footprint = small_loaded.load(small_loaded.case())
     assert abs(loaded.road_force / small_loaded.default_load - 1) < loading.LOAD_TOLERANCE and loaded.stable
     assert footprint.force_balance() < 1e-9 and footprint.deflection == loaded.road_lift
-    inflated = model_inflated
-    lighter, swept = loading.load_sweep(tire, inflated, [600.0, 1000.0], small_loaded.spec.solid_mesh.road_step)
-    assert abs(lighter.road_force / 600.0 - 1) < loading.LOAD_TOLERANCE and lighter.stable
-    assert np.array_equal(swept.contact, loaded.contact)
-    assert np.abs(swept.u - loaded.u).max() < 1e-8 * np.abs(loaded.u).max()
+    further = road_contact.press_on_road(tire, model_inflated, 1.1 * loaded.road_lift, steps=1, start=loaded)
+    back = road_contact.press_on_road(tire, model_inflated, loaded.road_lift, steps=1, start=further)
+    assert np.array_equal(back.contact, loaded.contact)
+    assert np.abs(back.u - loaded.u).max() < 1e-8 * np.abs(loaded.u).max()
+    assert np.abs(further.u - loaded.u).max() > 0.05 * np.abs(loaded.u).max()  # a path of its own
     with pytest.raises(ValueError, match="start carries"):
-        loading.load_on_road(tire, inflated, 500.0, 0.001, start=swept)
-    with pytest.raises(ValueError, match="increasing"):
-        loading.load_sweep(tire, swept, [1000.0, 900.0], 0.001)
+        loading.load_on_road(tire, model_inflated, 500.0, 0.001, start=loaded)
+
+
+def test_a_load_sweep_continues_each_load_from_the_last(monkeypatch):
+    """Each load of a sweep starts from the state of the one before (the first from ``start``)."""
+    starts = []
+
+    def landed(tire, inflated, load, road_step, road, start):
+        starts.append(start)
+        return f"state at {load:g} N"
+
+    monkeypatch.setattr(loading, "load_on_road", landed)
+    states = loading.load_sweep(None, None, [1000.0, 2000.0, 3000.0], 0.005, start="start")
+    assert states == ["state at 1000 N", "state at 2000 N", "state at 3000 N"]
+    assert starts == ["start", "state at 1000 N", "state at 2000 N"]
+    for loads in ([1000.0, 900.0], [], [1000.0, 1000.0]):
+        with pytest.raises(ValueError, match="increasing"):
+            loading.load_sweep(None, None, loads, 0.001)
 
 
 def test_a_load_the_tire_cannot_carry_or_a_step_newton_cannot_follow_is_refused_naming_it(tire, inflated, monkeypatch):
@@ -66,21 +81,26 @@ def test_a_load_the_tire_cannot_carry_or_a_step_newton_cannot_follow_is_refused_
 
 
 def test_a_road_step_newton_does_not_follow_is_halved_and_the_load_still_carried(tire, inflated, monkeypatch):
-    """Newton made to fail on any road step longer than 0.6 of ``road_step``: the load is reached in half
-    steps (that the state does not depend on the steps is tested with the load case's paths)."""
+    """Newton made to fail on any road step longer than 0.6 of ``road_step``: the first step is halved,
+    the next goes as far as the secant stiffness asks (a little past the load), and the load is carried
+    (that the state does not depend on the steps is tested with the load case's paths)."""
     press = road_contact.press_on_road
-    lifts = []
+    pressed = []
 
     def follows_half_steps(tire, inflated, lift, road, start, **options):
         if lift - start.road_lift > 0.6 * 0.004:
             raise RuntimeError("did not converge")
-        lifts.append(lift)
-        return press(tire, inflated, lift, road, start=start, **options)
+        state = press(tire, inflated, lift, road, start=start, **options)
+        pressed.append((lift, state.road_force))
+        return state
 
     monkeypatch.setattr(road_contact, "press_on_road", follows_half_steps)
     halved = loading.load_on_road(tire, inflated, 600.0, 0.004)
     monkeypatch.undo()
-    assert np.allclose(lifts[:2], [0.002, 0.004])  # the first two steps halved
+    (first, carried), (second, passed) = pressed[:2]
+    assert first == pytest.approx(0.002, abs=1e-15)  # 4 mm refused, 2 mm taken
+    assert second - first == pytest.approx(loading.SECANT_OVERSHOOT * (600.0 - carried) * first / carried, rel=1e-12)
+    assert carried < 600.0 < passed < 1.1 * 600.0  # the secant's step passes the load, close to it
     assert abs(halved.road_force - 600.0) < 1e-7 and halved.stable
 
 

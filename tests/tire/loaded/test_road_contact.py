@@ -22,7 +22,7 @@ DRUM = make_road("drum", 1.25)
 @pytest.fixture(scope="module")
 def on_drum(model_tire, model_inflated, model_state):
     """The test mesh on the paper's 1.25 m drum, raised as far as the flat road's state at 1 kN."""
-    return road_contact.press_on_road(model_tire, model_inflated, model_state.road_lift, DRUM, steps=2)
+    return road_contact.press_on_road(model_tire, model_inflated, model_state.road_lift, DRUM, steps=1)
 
 
 def test_on_the_drum_the_nodes_lie_on_it_and_its_forces_push_along_its_normal(model_tire, on_drum):
@@ -65,7 +65,7 @@ def test_on_the_drum_the_tangent_stiffness_is_the_derivative_of_the_road_force(m
 
 def test_the_drum_tends_to_the_flat_road_like_one_over_its_radius(model_tire, model_inflated, model_state, on_drum):
     larger = road_contact.press_on_road(
-        model_tire, model_inflated, model_state.road_lift, make_road("drum", 5.0), steps=2
+        model_tire, model_inflated, model_state.road_lift, make_road("drum", 5.0), steps=1
     )
     flat = model_state.road_force
     assert on_drum.road_force < larger.road_force < flat  # the drum's drop under the footprint unloads it
@@ -88,6 +88,11 @@ def test_on_the_drum_the_reduced_solve_is_the_direct_one(model_tire, on_drum):
     assert abs(reduced.H_tot[0] / direct.H_tot[0] - 1) < 1e-9
 
 
-def test_a_load_case_on_the_drum_is_carried_exactly(tire, inflated):
-    state = loading.load_on_road(tire, inflated, 500.0, 0.005, DRUM)
-    assert abs(state.road_force / 500.0 - 1) < loading.LOAD_TOLERANCE and state.road is DRUM
+def test_a_load_case_on_the_drum_is_carried_exactly(model_tire, model_inflated, on_drum):
+    """From the drum's state a little further, to a load 2 % above its force (the secant's step, then
+    Brent's method); a start on another road is refused."""
+    load = 1.02 * on_drum.road_force
+    state = loading.load_on_road(model_tire, model_inflated, load, 0.007, DRUM, start=on_drum)
+    assert abs(state.road_force / load - 1) < loading.LOAD_TOLERANCE and state.road is DRUM and state.stable
+    with pytest.raises(ValueError, match="stands on the drum road, not on the flat road"):
+        loading.load_on_road(model_tire, model_inflated, load, 0.007, start=on_drum)
