@@ -20,6 +20,7 @@ A published tire's parameters live in ``data/published/<name>.toml`` with their 
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -27,6 +28,7 @@ import pandas as pd
 
 from .. import guards
 from ..repro.paths import data_dir, read_toml
+from ..tire.model import TireModel, tire_model
 
 #: The property file's parameters a published tire gives, and their meaning.
 PARAMETERS = {
@@ -162,3 +164,72 @@ def mf_swift_table(
             "contact length (mm)": tire.contact_length(loads, pressure) * 1e3,
         }
     )
+
+
+def published_comparison(
+    published: MFSwiftVertical,
+    tires: Sequence[TireModel | str],
+    loads: tuple[float, float, float] = (2000.0, 4000.0, 6000.0),
+) -> pd.DataFrame:
+    """The published tire and each of ``tires`` (tire models of its size, at its nominal pressure) on the flat road.
+
+    One row per tire, the published one first: its inflation (bar), its tangent vertical stiffness
+    and deflection at the middle of ``loads`` (the published tire's nominal load), the tangent's
+    change to the lightest and the heaviest load (:math:`K_v(F)/K_v(F_{nom})`: how the tire hardens),
+    and its contact length at the nominal load (a model's footprint length: its contact points'
+    extent, their tributary lengths included; MF-Swift's :math:`2a`).
+
+    Raises
+    ------
+    ValueError
+        ``loads`` not three increasing loads with the published tire's nominal load in the middle.
+    """
+    loads = tuple(guards.real("loads", load, *guards.LOAD_RANGE, unit="N") for load in loads)
+    if len(loads) != 3 or not loads[0] < loads[1] < loads[2] or loads[1] != published.nominal_load:
+        raise ValueError(
+            f"loads = {loads}: give three increasing loads (N), the middle one the published tire's nominal "
+            f"load {published.nominal_load:g} N"
+        )
+    stiffness = published.tangent_stiffness(np.asarray(loads))
+    rows = [
+        _comparison_row(
+            published.name,
+            published.nominal_pressure,
+            stiffness,
+            float(published.deflection(loads[1])),
+            float(published.contact_length(loads[1])),
+        )
+    ]
+    for tire in tires:
+        model = tire_model(tire)
+        footprints = [model.load(model.case("flat", load)) for load in loads]
+        rows.append(
+            _comparison_row(
+                model.name,
+                _inflation(model),
+                np.array([f.vertical_stiffness for f in footprints]),
+                footprints[1].deflection,
+                footprints[1].footprint_length,
+            )
+        )
+    return pd.DataFrame(rows).set_index("tire")
+
+
+def _comparison_row(name: str, pressure: float, stiffness: np.ndarray, deflection: float, length: float) -> dict:
+    return {
+        "tire": name,
+        "inflation (bar)": pressure / 1e5,
+        "K_v at the nominal load (N/mm)": stiffness[1] / 1e3,
+        "deflection (mm)": deflection * 1e3,
+        "K_v(light) / K_v(nominal)": stiffness[0] / stiffness[1],
+        "K_v(heavy) / K_v(nominal)": stiffness[2] / stiffness[1],
+        "contact length (mm)": length * 1e3,
+    }
+
+
+def _inflation(model: TireModel) -> float:
+    """The model's inflation pressure (Pa), NaN where its files do not give it (a tire from FRF files)."""
+    operating = getattr(model.spec, "operating", None)
+    if operating is None:  # the loaded FE tire: its construction's file holds it
+        operating = getattr(getattr(model.spec, "construction", None), "operating", None)
+    return float(getattr(operating, "inflation_pressure", np.nan))

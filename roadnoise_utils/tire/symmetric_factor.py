@@ -35,6 +35,10 @@ class SymmetricFactor:
     ----------
     definite : bool
         Whether ``matrix`` is positive definite: every pivot of ``D`` positive, each on the diagonal.
+    negative_pivots : int or None
+        The negative pivots of ``D``: by Sylvester's law of inertia the count of ``matrix``'s negative
+        eigenvalues (in exact arithmetic; the unpivoted factor of an indefinite matrix may miss it by
+        round-off); ``None`` where the factor had to pivot off the diagonal.
 
     Raises
     ------
@@ -58,6 +62,7 @@ class SymmetricFactor:
         if np.iscomplexobj(csc.data):
             raise ValueError("matrix must be real")
         self._matrix, self._pivoting = csc, False
+        self.negative_pivots: int | None = None
         try:
             self._lu = spla.splu(
                 csc, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0, options={"SymmetricMode": True}
@@ -69,7 +74,10 @@ class SymmetricFactor:
             self._factor_with_pivoting()
             return
         on_diagonal = np.array_equal(self._lu.perm_r, self._lu.perm_c)
-        self.definite = bool(on_diagonal and np.all(self._lu.U.diagonal() > 0.0))
+        pivots = self._lu.U.diagonal()
+        self.definite = bool(on_diagonal and np.all(pivots > 0.0))
+        if on_diagonal:
+            self.negative_pivots = int(np.count_nonzero(pivots < 0.0))
         if require_definite and not self.definite:
             raise np.linalg.LinAlgError("matrix is not positive definite")
 

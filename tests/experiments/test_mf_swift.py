@@ -15,6 +15,7 @@ import pytest
 
 from roadnoise_utils.experiments import mf_swift
 from roadnoise_utils.repro import paths
+from roadnoise_utils.tire.model import tire_model
 
 
 @pytest.fixture(scope="module")
@@ -71,3 +72,28 @@ def test_bad_input_and_bad_files_are_refused_naming_them(tire, tmp_path, monkeyp
         (tmp_path / "published" / "bad.toml").write_text(original.replace(*edit))
         with pytest.raises(ValueError, match=message):
             mf_swift.mf_swift_tire("bad")
+
+
+def test_the_comparison_puts_each_model_beside_the_published_tire(tire):
+    """The published row is the published model's own values; a model's row its own footprints' at the
+    same three loads (the 205/60 R15 ring tire: its file at the published tire's size and pressure)."""
+    ring = tire_model("205_60R15")
+    table = mf_swift.published_comparison(tire, [ring])
+    assert list(table.index) == [tire.name, ring.name]
+    own = mf_swift.mf_swift_table(tire).set_index("load (N)")
+    published = table.loc[tire.name]
+    assert published["K_v at the nominal load (N/mm)"] == pytest.approx(tire.vertical_stiffness / 1e3, rel=1e-12)
+    assert published["K_v(light) / K_v(nominal)"] == pytest.approx(own.loc[2000.0, "K_v / K_v(FNOMIN)"], rel=1e-12)
+    assert published["contact length (mm)"] == pytest.approx(own.loc[4000.0, "contact length (mm)"], rel=1e-12)
+    footprints = [ring.load(ring.case("flat", load)) for load in (2000.0, 4000.0, 6000.0)]
+    row = table.loc[ring.name]
+    assert row["inflation (bar)"] == published["inflation (bar)"] == 2.2
+    assert row["K_v(heavy) / K_v(nominal)"] == pytest.approx(
+        footprints[2].vertical_stiffness / footprints[1].vertical_stiffness, rel=1e-12
+    )
+    assert row["contact length (mm)"] == pytest.approx(footprints[1].footprint_length * 1e3, rel=1e-12)
+    files = ("205_60R15_cross_section", "205_60R15_loaded")  # each model's inflation from its own files
+    assert [mf_swift._inflation(tire_model(name)) for name in files] == [tire.nominal_pressure] * 2
+    for loads in ((2000.0, 3000.0, 6000.0), (6000.0, 4000.0, 2000.0), (2000.0, 4000.0)):
+        with pytest.raises(ValueError, match="loads"):
+            mf_swift.published_comparison(tire, [], loads)

@@ -49,6 +49,18 @@ def test_it_says_whether_the_matrix_is_definite_by_its_pivots():
     assert SymmetricFactor(base - sp.identity(base.shape[0]) * 0.5 * least).definite
 
 
+@pytest.mark.parametrize("fraction", [0.1, 0.37, 0.8])
+def test_its_negative_pivots_count_the_eigenvalues_below_a_shift(fraction):
+    """Sylvester's law of inertia: the ring shifted into its spectrum has as many negative pivots as
+    eigenvalues below the shift (the modes below a cut-off, counted by one factor)."""
+    base = closed_ring(30)
+    values = np.linalg.eigvalsh(base.toarray())
+    shift = values[0] + fraction * (values[-1] - values[0])
+    factor = SymmetricFactor(base - sp.identity(base.shape[0]) * shift, require_definite=False)
+    assert factor.negative_pivots == np.count_nonzero(values < shift) > 0
+    assert SymmetricFactor(base).negative_pivots == 0
+
+
 def test_bad_input_is_refused_naming_it():
     with pytest.raises(ValueError, match="square"):
         SymmetricFactor(sp.csr_matrix(np.ones((3, 4))))

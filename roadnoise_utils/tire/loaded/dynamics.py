@@ -391,12 +391,15 @@ def _factor(stiffness: sp.spmatrix) -> SymmetricFactor:
 
 
 def _modes_below(stiffness: sp.spmatrix, mass: sp.spmatrix, factor, omega_cut: float) -> np.ndarray:
-    """Mass-normalised modes (n, k) with eigenvalues below ``omega_cut^2``: shift-invert Lanczos about 0
-    on the stiffness's ``factor``. A first call for 24 modes sets how many to ask for next, the count
-    growing like the frequency (a shell's modal density is flat in frequency), with a quarter to spare."""
+    r"""Mass-normalised modes (n, k) with eigenvalues below ``omega_cut^2``: shift-invert Lanczos about 0
+    on the stiffness's ``factor``, asked for as many as there are (the negative pivots of
+    :math:`K - \omega_{cut}^2 M`, Sylvester's law of inertia) with a tenth to spare; where that count
+    is unavailable or falls short, the request grows like the frequency (a shell's modal density is
+    flat in frequency), with a quarter to spare, until the last mode found is above the cut-off."""
     n = stiffness.shape[0]
     inverse = spla.LinearOperator((n, n), matvec=factor.solve, dtype=float)
-    count = min(24, n - 2)
+    below = _count_below(stiffness, mass, omega_cut)
+    count = min(24 if below is None else int(1.1 * below) + 4, n - 2)
     while True:
         values, vectors = spla.eigsh(stiffness, count, mass, sigma=0.0, which="LM", OPinv=inverse)
         order = np.argsort(values)
@@ -404,6 +407,15 @@ def _modes_below(stiffness: sp.spmatrix, mass: sp.spmatrix, factor, omega_cut: f
         if values[-1] > omega_cut**2 or count == n - 2:
             return vectors[:, values < omega_cut**2]
         count = min(n - 2, int(np.ceil(1.25 * count * omega_cut / np.sqrt(max(values[-1], 1e-300)))) + 1)
+
+
+def _count_below(stiffness: sp.spmatrix, mass: sp.spmatrix, omega_cut: float) -> int | None:
+    """How many eigenvalues of ``(stiffness, mass)`` lie below ``omega_cut^2``: the negative pivots of the
+    shifted stiffness's symmetric factor (``None`` where it pivoted off the diagonal)."""
+    try:
+        return SymmetricFactor((stiffness - omega_cut**2 * mass).tocsc(), require_definite=False).negative_pivots
+    except np.linalg.LinAlgError:  # singular at the shift: a mode exactly at the cut-off
+        return None
 
 
 def _mass_orthonormal(vectors: np.ndarray, mass: sp.spmatrix, keep: int) -> np.ndarray:

@@ -52,8 +52,10 @@ STEP_TOLERANCE = 1e-11
 MAX_ITERATIONS = 30
 #: Updates of the contact set allowed per load step.
 MAX_ACTIVE_SET_UPDATES = 20
-#: The contact set is updated once the out-of-balance force is below this fraction of the applied forces.
-ACTIVE_SET_TOLERANCE = 1e-3
+#: The contact set is updated once the out-of-balance force is below this fraction of the applied forces:
+#: early, so that the nodes a road step brings in join while Newton is still converging (on the production
+#: mesh's drum loading 95 iterations at 1e-1 or at every iteration, 109 at 1e-3, the same state to 2e-14 m).
+ACTIVE_SET_TOLERANCE = 1e-1
 #: A free tread node joins the contact set when below the road by more than this fraction of the lift.
 GAP_TOLERANCE = 1e-9
 
