@@ -6,6 +6,7 @@ Run on demand (never as a timed test; the nonlinear loading takes minutes)::
     python benchmarks/bench_loaded_tire.py --arcs 0.02 0.01     # two footprint arc lengths
     python benchmarks/bench_loaded_tire.py --no-nonlinear       # the linearised comparison alone
     python benchmarks/bench_loaded_tire.py --step 0.002         # road steps of 2 mm
+    python benchmarks/bench_loaded_tire.py --convergence        # the tire file's mesh and two refinements
 
 Both tires discretise the 165/65 R14 file's section at ``--crown`` and ``--sidewall`` elements;
 the swept solids take arcs of ``--arcs`` (m) over the footprint sector (+-0.28 rad), growing to
@@ -37,6 +38,11 @@ time, deflection, tangent K_v, tasselli and peak pressure, H_tot at rest and its
 static influence of the footprint's end rows, and the linear chain's quasi-static peak of the
 paper's 15 x 15 mm cleat (:func:`roadnoise_utils.experiments.cleat.quasi_static_peak`).
 
+``--convergence`` loads the loaded FE tire file (``--loaded``) on the flat road at its load on its
+own mesh and two refinements (:data:`CONVERGENCE_MESHES`: footprint arcs 20, 14 and 10 mm, crown 4,
+6 and 8 and sidewall 2, 3 and 4 elements) through the interface: K_v, the footprint and the first
+peak f1 of H_tot (a parabola through the 1 Hz samples), with the times.
+
 ``--modes N`` first compares the inflated, unloaded modes n = 0..6 on N uniform arcs with the
 waveguide's: each solid mode's harmonic is the one that carries most of its displacement.
 """
@@ -63,6 +69,11 @@ from roadnoise_utils.tire.model import tire_model
 from roadnoise_utils.tire.symmetric_factor import SymmetricFactor
 
 LOADS = (1000.0, 2000.0, 3000.0, 4512.0)
+
+
+#: The tire file's mesh and two refinements, each element length divided by about sqrt(2): footprint arcs (m),
+#: crown and sidewall elements of the section.
+CONVERGENCE_MESHES = [(0.02, 4, 2), (0.014, 6, 3), (0.01, 8, 4)]
 
 
 def footprint_size(tire: statics.LoadedTire, state: statics.StaticState) -> tuple[float, float]:
@@ -255,6 +266,42 @@ def compare_on_drum(loaded_name: str) -> None:
         )
 
 
+def first_peak(values: np.ndarray, freqs: np.ndarray) -> float:
+    """The first local maximum of ``|values|`` above 10 Hz (Hz), refined by a parabola through its three samples."""
+    magnitude = np.abs(values)
+    local = (magnitude[1:-1] > magnitude[:-2]) & (magnitude[1:-1] > magnitude[2:]) & (freqs[1:-1] > 10.0)
+    i = int(np.nonzero(local)[0][0]) + 1
+    below, at, above = magnitude[i - 1 : i + 2]
+    return float(freqs[i] + 0.5 * (freqs[1] - freqs[0]) * (below - above) / (below - 2 * at + above))
+
+
+def mesh_convergence(loaded_name: str, meshes: list[tuple[float, int, int]]) -> None:
+    """The loaded tire on the flat road at its file's load on each mesh (footprint arc m, crown and sidewall
+    elements), through the interface: K_v, the footprint, the first peak of H_tot (f1), times."""
+    base = tire_model(loaded_name)
+    print("  arc mm | crown | sidewall | DOF   | load s | FRFs s | deflection mm | K_v N/mm | footprint mm    | f1 Hz")
+    for arc, crown, sidewall in meshes:
+        model = base.replace(
+            **{
+                "solid_mesh.footprint_arc": arc,
+                "solid_mesh.crown_elements": crown,
+                "solid_mesh.sidewall_elements": sidewall,
+            }
+        )
+        case = model.case()
+        t0 = time.perf_counter()
+        fp = model.load(case)
+        t1 = time.perf_counter()
+        frfs = model.fixed_hub_frfs(case)
+        t2 = time.perf_counter()
+        print(
+            f"  {arc * 1e3:6.0f} | {crown:5d} | {sidewall:8d} | {model.equivalent_dof():5d} | {t1 - t0:6.0f} | {t2 - t1:6.0f}"
+            f" | {fp.deflection * 1e3:13.2f} | {fp.vertical_stiffness / 1e3:8.1f} | {fp.footprint_length * 1e3:5.1f} x "
+            f"{fp.footprint_width * 1e3:5.1f} | {first_peak(frfs.H_tot, frfs.freqs):5.1f}",
+            flush=True,
+        )
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--tire", default="165_65R14_cross_section")
@@ -267,9 +314,15 @@ def main() -> None:
     parser.add_argument("--modes", type=int, default=0, help="uniform arcs for the modes' comparison (0: none)")
     parser.add_argument("--drum", action="store_true", help="both tires on the drum through the interface")
     parser.add_argument("--loaded", default="165_65R14_loaded", help="the loaded FE tire file of --drum")
+    parser.add_argument(
+        "--convergence", action="store_true", help="the loaded tire file's mesh and two refinements, flat road"
+    )
     args = parser.parse_args()
     if args.drum:
         compare_on_drum(args.loaded)
+        return
+    if args.convergence:
+        mesh_convergence(args.loaded, CONVERGENCE_MESHES)
         return
     # one contact column per tassello column: the coarse crown's tread nodes are ~15 mm apart
     section = {"mesh.crown_elements": args.crown, "mesh.sidewall_elements": args.sidewall}

@@ -170,19 +170,24 @@ def published_comparison(
     published: MFSwiftVertical,
     tires: Sequence[TireModel | str],
     loads: tuple[float, float, float] = (2000.0, 4000.0, 6000.0),
+    pressure_change: float = 0.22,
 ) -> pd.DataFrame:
     """The published tire and each of ``tires`` (tire models of its size, at its nominal pressure) on the flat road.
 
     One row per tire, the published one first: its inflation (bar), its tangent vertical stiffness
     and deflection at the middle of ``loads`` (the published tire's nominal load), the tangent's
-    change to the lightest and the heaviest load (:math:`K_v(F)/K_v(F_{nom})`: how the tire hardens),
-    and its contact length at the nominal load (a model's footprint length: its contact points'
-    extent, their tributary lengths included; MF-Swift's :math:`2a`).
+    change to the lightest and the heaviest load (:math:`K_v(F)/K_v(F_{nom})`: how the tire hardens)
+    and to an inflation ``pressure_change`` (-) below and above its own at the nominal load (the
+    model's file with the pressure changed; MF-Swift's force at a deflection scales with
+    :math:`1 + p_{Fz1}\\,dp_i`), and its contact
+    length at the nominal load (a model's footprint length: its contact points' extent, their
+    tributary lengths included; MF-Swift's :math:`2a`).
 
     Raises
     ------
     ValueError
-        ``loads`` not three increasing loads with the published tire's nominal load in the middle.
+        ``loads`` not three increasing loads with the published tire's nominal load in the middle;
+        ``pressure_change`` outside (0, 0.5).
     """
     loads = tuple(guards.real("loads", load, *guards.LOAD_RANGE, unit="N") for load in loads)
     if len(loads) != 3 or not loads[0] < loads[1] < loads[2] or loads[1] != published.nominal_load:
@@ -190,32 +195,52 @@ def published_comparison(
             f"loads = {loads}: give three increasing loads (N), the middle one the published tire's nominal "
             f"load {published.nominal_load:g} N"
         )
-    stiffness = published.tangent_stiffness(np.asarray(loads))
+    change = guards.real("pressure_change", pressure_change, 0.0, 0.5, lo_open=True, hi_open=True, unit="")
+    factors = (1.0 - change, 1.0 + change)
+    pressures = [factor * published.nominal_pressure for factor in factors]
     rows = [
         _comparison_row(
             published.name,
             published.nominal_pressure,
-            stiffness,
+            published.tangent_stiffness(np.asarray(loads)),
+            np.array([published.tangent_stiffness(loads[1], p) for p in pressures]),
             float(published.deflection(loads[1])),
             float(published.contact_length(loads[1])),
+            change,
         )
     ]
     for tire in tires:
         model = tire_model(tire)
+        pressure = _inflation(model)
         footprints = [model.load(model.case("flat", load)) for load in loads]
+        inflated = [
+            model.replace(**{"operating.inflation_pressure": factor * pressure}).load(model.case("flat", loads[1]))
+            for factor in factors
+        ]
         rows.append(
             _comparison_row(
                 model.name,
-                _inflation(model),
+                pressure,
                 np.array([f.vertical_stiffness for f in footprints]),
+                np.array([f.vertical_stiffness for f in inflated]),
                 footprints[1].deflection,
                 footprints[1].footprint_length,
+                change,
             )
         )
     return pd.DataFrame(rows).set_index("tire")
 
 
-def _comparison_row(name: str, pressure: float, stiffness: np.ndarray, deflection: float, length: float) -> dict:
+def _comparison_row(
+    name: str,
+    pressure: float,
+    stiffness: np.ndarray,
+    stiffness_at_pressures: np.ndarray,
+    deflection: float,
+    length: float,
+    change: float,
+) -> dict:
+    percent = f"{100 * change:g} %"
     return {
         "tire": name,
         "inflation (bar)": pressure / 1e5,
@@ -223,13 +248,17 @@ def _comparison_row(name: str, pressure: float, stiffness: np.ndarray, deflectio
         "deflection (mm)": deflection * 1e3,
         "K_v(light) / K_v(nominal)": stiffness[0] / stiffness[1],
         "K_v(heavy) / K_v(nominal)": stiffness[2] / stiffness[1],
+        f"K_v(pressure - {percent}) / K_v": stiffness_at_pressures[0] / stiffness[1],
+        f"K_v(pressure + {percent}) / K_v": stiffness_at_pressures[1] / stiffness[1],
         "contact length (mm)": length * 1e3,
     }
 
 
 def _inflation(model: TireModel) -> float:
-    """The model's inflation pressure (Pa), NaN where its files do not give it (a tire from FRF files)."""
+    """The model's inflation pressure (Pa) from its files (the loaded FE tire's from its construction's)."""
     operating = getattr(model.spec, "operating", None)
-    if operating is None:  # the loaded FE tire: its construction's file holds it
+    if operating is None:
         operating = getattr(getattr(model.spec, "construction", None), "operating", None)
-    return float(getattr(operating, "inflation_pressure", np.nan))
+    if operating is None:
+        raise ValueError(f"tire {model.name!r}: its files give no inflation pressure to change")
+    return float(operating.inflation_pressure)

@@ -29,7 +29,10 @@ REFINEMENTS = 2
 
 
 class SymmetricFactor:
-    """:math:`P A P^T = L D L^T` of a sparse symmetric real ``matrix``; :meth:`solve` takes ``(n,)`` or ``(n, k)``.
+    """:math:`P A P^T = L D L^T` of a sparse symmetric ``matrix``; :meth:`solve` takes ``(n,)`` or ``(n, k)``.
+
+    A complex symmetric matrix (:math:`A = A^T`: a damped dynamic stiffness) is factorised and
+    solved as an indefinite real one (``require_definite=False``): never definite, no inertia.
 
     Attributes
     ----------
@@ -43,7 +46,8 @@ class SymmetricFactor:
     Raises
     ------
     ValueError
-        ``matrix`` is not square, not real or not symmetric (beyond :data:`~roadnoise_utils.tire.banded.SYMMETRY_TOLERANCE`).
+        ``matrix`` is not square or not symmetric (beyond :data:`~roadnoise_utils.tire.banded.SYMMETRY_TOLERANCE`),
+        or complex where it must be definite.
     numpy.linalg.LinAlgError
         ``require_definite`` and ``matrix`` is not positive definite, or ``matrix`` is singular.
 
@@ -59,8 +63,9 @@ class SymmetricFactor:
     def __init__(self, matrix: sp.spmatrix | sp.sparray, require_definite: bool = True):
         csc = sp.csc_matrix(matrix)
         require_symmetric(csc)
-        if np.iscomplexobj(csc.data):
-            raise ValueError("matrix must be real")
+        self._complex = np.iscomplexobj(csc.data)
+        if self._complex and require_definite:
+            raise ValueError("matrix must be real to be positive definite (give require_definite=False)")
         self._matrix, self._pivoting = csc, False
         self.negative_pivots: int | None = None
         try:
@@ -72,6 +77,9 @@ class SymmetricFactor:
             if require_definite:
                 raise np.linalg.LinAlgError("matrix is not positive definite") from None
             self._factor_with_pivoting()
+            return
+        if self._complex:  # a complex symmetric matrix (a damped dynamic stiffness) has no inertia
+            self.definite = False
             return
         on_diagonal = np.array_equal(self._lu.perm_r, self._lu.perm_c)
         pivots = self._lu.U.diagonal()
@@ -97,9 +105,12 @@ class SymmetricFactor:
         rhs = np.asarray(rhs)
         if rhs.shape[0] != self.shape[0]:
             raise ValueError(f"rhs must have {self.shape[0]} rows, got shape {rhs.shape}")
-        if np.iscomplexobj(rhs):
+        if self._complex:
+            rhs = np.asarray(rhs, complex)
+        elif np.iscomplexobj(rhs):
             return self.solve(np.ascontiguousarray(rhs.real)) + 1j * self.solve(np.ascontiguousarray(rhs.imag))
-        rhs = np.asarray(rhs, float)
+        else:
+            rhs = np.asarray(rhs, float)
         x = self._lu.solve(rhs)
         if self.definite or self._pivoting:
             return x

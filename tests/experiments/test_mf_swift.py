@@ -92,8 +92,17 @@ def test_the_comparison_puts_each_model_beside_the_published_tire(tire):
         footprints[2].vertical_stiffness / footprints[1].vertical_stiffness, rel=1e-12
     )
     assert row["contact length (mm)"] == pytest.approx(footprints[1].footprint_length * 1e3, rel=1e-12)
+    softer = ring.replace(**{"operating.inflation_pressure": 0.78 * 2.2e5}).load(ring.case("flat", 4000.0))
+    assert row["K_v(pressure - 22 %) / K_v"] == pytest.approx(
+        softer.vertical_stiffness / footprints[1].vertical_stiffness, rel=1e-12
+    )
+    stiffer = tire.tangent_stiffness(4000.0, 1.22 * tire.nominal_pressure) / tire.vertical_stiffness
+    assert published["K_v(pressure + 22 %) / K_v"] == pytest.approx(stiffer, rel=1e-12)
+    assert row["K_v(pressure - 22 %) / K_v"] < 1.0 < row["K_v(pressure + 22 %) / K_v"]
     files = ("205_60R15_cross_section", "205_60R15_loaded")  # each model's inflation from its own files
     assert [mf_swift._inflation(tire_model(name)) for name in files] == [tire.nominal_pressure] * 2
     for loads in ((2000.0, 3000.0, 6000.0), (6000.0, 4000.0, 2000.0), (2000.0, 4000.0)):
         with pytest.raises(ValueError, match="loads"):
             mf_swift.published_comparison(tire, [], loads)
+    with pytest.raises(ValueError, match="pressure_change"):
+        mf_swift.published_comparison(tire, [], pressure_change=0.5)

@@ -30,7 +30,6 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from ... import guards
-from ..banded import banded_sum
 from ..symmetric_factor import SymmetricFactor
 from . import pressure, road_contact, solid
 from .statics import LoadedTire, StaticState
@@ -207,9 +206,9 @@ def footprint_frf_direct(linearised: LinearisedTire, freqs: np.ndarray) -> Loade
     The reference of the reduced solve: every DOF, no basis. Per frequency, the free DOF follow
     unit motions of each contact node and of the rim,
     :math:`u_f = -D_{ff}^{-1} D_{f,b}`, and the force on the hub is minus the rim's vertical
-    reactions, :math:`-\sum_{hub}(D_{h,f} u_f + D_{h,b})`. :math:`D_{ff}` is factorised as a band
-    (:func:`~roadnoise_utils.tire.banded.banded_sum`: the closed ring's band after reverse
-    Cuthill-McKee), SuperLU where no narrow band exists.
+    reactions, :math:`-\sum_{hub}(D_{h,f} u_f + D_{h,b})`. :math:`D_{ff}`, complex symmetric, is
+    factorised by :class:`~roadnoise_utils.tire.symmetric_factor.SymmetricFactor` (each solve's
+    backward error below 1e-12, else pivoted).
     """
     freqs = _check_freqs(freqs)
     lin = linearised
@@ -218,15 +217,12 @@ def footprint_frf_direct(linearised: LinearisedTire, freqs: np.ndarray) -> Loade
     coupling = [(part[lin.free] @ boundary).toarray() for part, boundary in zip(parts, boundaries)]
     hub_rows = [(part[lin.hub] @ boundary).toarray().sum(axis=0) for part, boundary in zip(parts, boundaries)]
     hub_free = [np.asarray(part[lin.hub][:, lin.free].sum(axis=0)).ravel() for part in parts]
-    banded = banded_sum(free_parts)
     out = []
     for frequency in freqs:
         w = lin.weights(2 * np.pi * frequency)
         rhs = -sum(wj * c for wj, c in zip(w, coupling))
-        if banded is not None:
-            u_free = banded.lu(w).solve(rhs)
-        else:
-            u_free = spla.splu(sum(wj * m for wj, m in zip(w, free_parts)).tocsc()).solve(rhs)
+        dynamic = sum(wj * m for wj, m in zip(w, free_parts)).tocsc()
+        u_free = SymmetricFactor(dynamic, require_definite=False).solve(rhs)
         rim = sum(wj * r for wj, r in zip(w, hub_rows)) + sum(wj * h for wj, h in zip(w, hub_free)) @ u_free
         out.append(-rim)
     hub = np.array(out)

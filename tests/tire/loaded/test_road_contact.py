@@ -72,18 +72,23 @@ def test_the_drum_tends_to_the_flat_road_like_one_over_its_radius(model_tire, mo
     assert 3.0 < (flat - on_drum.road_force) / (flat - larger.road_force) < 5.0  # 4: the radii's ratio
 
 
-def test_at_rest_the_drum_footprint_s_transfer_is_its_vertical_stiffness(model_tire, on_drum):
-    direct = dynamics.footprint_frf_direct(dynamics.linearise(model_tire, on_drum), np.array([0.0]))
+@pytest.fixture(scope="module")
+def drum_direct(model_tire, on_drum):
+    """The drum state linearised, and its footprint transfer by the direct solve at 0, 60 and 120 Hz."""
+    linearised = dynamics.linearise(model_tire, on_drum)
+    return linearised, dynamics.footprint_frf_direct(linearised, np.array([0.0, 60.0, 120.0]))
+
+
+def test_at_rest_the_drum_footprint_s_transfer_is_its_vertical_stiffness(model_tire, on_drum, drum_direct):
+    _, direct = drum_direct
     k_v = road_contact.vertical_stiffness(model_tire, on_drum)
     assert abs(direct.H_tot[0] / k_v - 1) < 1e-9 and abs(direct.G_H[0] / k_v + 1) < 1e-9
 
 
-def test_on_the_drum_the_reduced_solve_is_the_direct_one(model_tire, on_drum):
+def test_on_the_drum_the_reduced_solve_is_the_direct_one(drum_direct):
     """The reduced basis with the drum's slide on the curvature term: within 1e-3 of the direct solve."""
-    linearised = dynamics.linearise(model_tire, on_drum)
-    freqs = np.array([0.0, 60.0, 120.0])
-    direct = dynamics.footprint_frf_direct(linearised, freqs)
-    reduced = dynamics.footprint_frf(linearised, freqs)
+    linearised, direct = drum_direct
+    reduced = dynamics.footprint_frf(linearised, direct.freqs)
     assert np.abs(reduced.hub - direct.hub).max() < 1e-3 * np.abs(direct.hub).max()
     assert abs(reduced.H_tot[0] / direct.H_tot[0] - 1) < 1e-9
 
