@@ -4,7 +4,8 @@ The road contact (:mod:`.road_contact`) presses the road a given lift into the t
 gives a force. :func:`load_on_road` raises the road in steps of ``road_step`` until the road's force
 passes the load (a step the Newton iterations do not follow is halved, at most
 :data:`STEP_HALVINGS` times, the next step doubled back; near the load, a step no longer than
-the state's secant stiffness asks for, so that the first state past the load is close to it), then finds the lift that carries it
+the state's secant stiffness asks for, so that the first state past the load is close to it; where
+such a step falls short, the tire softening, plain steps again), then finds the lift that carries it
 exactly by Brent's method, which keeps the root bracketed, each solve starting from the nearest
 equilibrium. A load the tire cannot carry before the road reaches the rim, a step the Newton
 iterations cannot follow even halved and a lift that will not settle are refused by name.
@@ -76,9 +77,11 @@ def load_on_road(
         raise ValueError(
             f"start carries {below.road_force:.0f} N, not less than load = {load:g} N: give a lighter start"
         )
-    step, failures = road_step, 0
+    step, failures, secant = road_step, 0, True
     while above is None:
-        step = min(step, _secant_step(below, load))
+        by_secant = secant and _secant_step(below, load) < step
+        if by_secant:
+            step = _secant_step(below, load)
         try:
             state = _pressed(tire, inflated, below.road_lift + step, below, load, road_step, road)
         except _NotFollowed:
@@ -92,6 +95,7 @@ def load_on_road(
             above = state
         else:
             below = state
+            secant = not by_secant  # the secant's step fell short (the tire softens here): plain steps from now on
     return _land(tire, inflated, load, below, above, road_step, road)
 
 

@@ -8,6 +8,8 @@ the one built on its FRFs written to files and read back.
 
 from __future__ import annotations
 
+from types import SimpleNamespace
+
 import numpy as np
 import pytest
 
@@ -102,6 +104,28 @@ def test_a_road_step_newton_does_not_follow_is_halved_and_the_load_still_carried
     assert second - first == pytest.approx(loading.SECANT_OVERSHOOT * (600.0 - carried) * first / carried, rel=1e-12)
     assert carried < 600.0 < passed < 1.1 * 600.0  # the secant's step passes the load, close to it
     assert abs(halved.road_force - 600.0) < 1e-7 and halved.stable
+
+
+def test_where_the_tire_softens_the_secant_s_step_falls_short_once_then_plain_steps_reach_the_load(monkeypatch):
+    """A force growing like the square root of the lift (softening: every secant step falls short):
+    one secant step, then doubling steps up to ``road_step``, and the load is bracketed."""
+    lifts = []
+
+    def pressed(tire, inflated, lift, start, load, road_step, road):
+        lifts.append(lift)
+        assert len(lifts) < 50, "the steps never pass the load"
+        return SimpleNamespace(road_lift=lift, road_force=1000.0 * np.sqrt(lift / 0.01))
+
+    monkeypatch.setattr(loading, "_pressed", pressed)
+    monkeypatch.setattr(loading, "_land", lambda tire, inflated, load, below, above, *rest: (below, above))
+    inflated = SimpleNamespace(road_lift=0.0, road_force=0.0)
+    below, above = loading.load_on_road(None, inflated, 1500.0, 0.004)
+    assert below.road_force < 1500.0 <= above.road_force
+    steps = np.diff([0.0, *lifts])
+    (short,) = np.nonzero(np.abs(steps - 0.004) > 1e-12)[0]  # one step sized by the secant, the others road steps
+    before = SimpleNamespace(road_lift=lifts[short - 1], road_force=1000.0 * np.sqrt(lifts[short - 1] / 0.01))
+    assert steps[short] == pytest.approx(loading._secant_step(before, 1500.0), rel=1e-12) and steps[short] < 0.004
+    assert lifts[short] < lifts[-1] == above.road_lift and short == len(steps) - 2  # it fell short; one road step on
 
 
 def test_sticking_contact_and_what_it_lacks_are_refused_by_name(small_loaded, model_tire):
