@@ -30,7 +30,7 @@ from ..repro.cache import cached
 from ..repro.stages import Tire
 from ..response.band_limit import band_limited, record_length
 from ..rm.simulation import ModalSections, SimulationResult, modal_sections, simulate
-from ..road.cleat import cleat_input
+from ..road.cleat import cleat_input, cleat_profile
 from ..road.input import BAND, RoadInput
 from ..tire.model import Footprint, ModelSpec, tire_model
 from .conditions import load_conditions, resolve
@@ -389,6 +389,39 @@ def cleat_test(
 def quasi_static_force(static_influence: np.ndarray, road: RoadInput) -> np.ndarray:
     """Hub force with no dynamics at all: :math:`\\sum_i H_i(0)\\,u_i` (N)."""
     return np.asarray(static_influence) @ road.u
+
+
+def point_sampled_peak(
+    static: Footprint,
+    static_influence: np.ndarray,
+    height: float,
+    base: float,
+    shape: str = "triangle",
+    at: str = "nodes",
+    resolution: float = 1e-4,
+) -> float:
+    """The quasi-static cleat peak :math:`\\max_X \\sum_i H_i(0)\\,u_i(X)` (N) with the cleat's height taken at points.
+
+    ``at="nodes"``: each tassello's input the weighted mean of the cleat's height at its contact
+    nodes (the road's value at each node, as an FE model's nodal displacements; :func:`cleat_input`
+    averages it over each node's shape function instead); ``"centres"``: the height at each
+    tassello's centre. The cleat (``height``, ``base`` in m, ``shape``) passes the footprint in
+    steps of ``resolution`` (m). On a coarse footprint a narrow cleat is seen whole by one row of
+    points, where the shape-function average spreads it over the row's neighbours.
+    """
+    if at not in ("nodes", "centres"):
+        raise ValueError(f"at = {at!r}: valid values are 'nodes', 'centres'")
+    resolution = guards.real("resolution", resolution, 0.0, 0.01, lo_open=True, unit="m")
+    t = static.tasselli
+    profile = cleat_profile(height, base, shape)
+    x = t.node_x if at == "nodes" else t.centre_x
+    travel = np.arange(-x.max() - resolution, base - x.min() + resolution, resolution)  # the cleat under every point
+    heights = profile(x[:, None] + travel[None, :])  # a point at x meets road coordinate x + travel
+    if at == "nodes":
+        weights = np.zeros((t.n, x.size))
+        weights[t.node_tassello, np.arange(x.size)] = t.node_weight
+        heights = (weights / weights.sum(axis=1, keepdims=True)) @ heights
+    return float((np.asarray(static_influence) @ heights).max())
 
 
 def row_influence(static: Footprint, static_influence: np.ndarray) -> pd.DataFrame:

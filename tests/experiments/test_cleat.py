@@ -86,3 +86,34 @@ def test_peak_sensitivity_is_the_peak_of_each_variant_alone(coarse_tire):
     assert peaks["as it is"] == cleat.quasi_static_peak(coarse_tire, 0.015, 0.015)
     assert peaks["2.6 bar"] == cleat.quasi_static_peak(coarse_tire.replace(**change), 0.015, 0.015)
     assert peaks["2.6 bar"] != peaks["as it is"]
+
+
+@pytest.fixture(scope="module")
+def coarse_footprint():
+    """The ring 165/65 R14 at the paper's FE element size (~25 mm along the belt, rows of one element) on its drum,
+    with its static influences H_i(0)."""
+    model = ru.tire_model("165_65R14").replace(**{"mesh.n_elements": 72, "tasselli.target_length": 0.025})
+    case = model.case("drum", None, ru.experiments.cleat_conditions().drum_radius)
+    return model.load(case), model.fixed_hub_frfs(case, np.array([0.0])).H[:, 0].real
+
+
+@pytest.mark.parametrize("at", ["nodes", "centres"])
+def test_a_point_sampled_cleat_longer_than_the_footprint_loads_every_tassello_by_its_height(coarse_footprint, at):
+    """A 10 mm step longer than the footprint under every point: the hub force is its height times K_v."""
+    static, h0 = coarse_footprint
+    peak = cleat.point_sampled_peak(static, h0, 0.01, 0.45, "rectangle", at=at)
+    assert peak == pytest.approx(0.01 * h0.sum(), rel=1e-12)
+
+
+def test_a_narrow_cleat_sampled_at_the_centres_of_rows_further_apart_than_it_loads_one_row_at_a_time(
+    coarse_footprint,
+):
+    """Rows 25 mm apart, a 15 mm triangle: one row's centres under it at a time, its apex on them at the peak."""
+    static, h0 = coarse_footprint
+    t = static.tasselli
+    assert np.diff(np.unique(np.round(t.centre_x, 3))).min() > 0.015  # the rows' centres further apart than its base
+    rows = [h0[t.row == r].sum() for r in np.unique(t.row)]
+    peak = cleat.point_sampled_peak(static, h0, 0.015, 0.015, at="centres", resolution=1e-5)
+    assert 0.98 * 0.015 * max(rows) < peak <= 0.015 * max(rows)  # the row's centres differ by a fraction of a mm
+    with pytest.raises(ValueError, match="at = 'edges'"):
+        cleat.point_sampled_peak(static, h0, 0.015, 0.015, at="edges")

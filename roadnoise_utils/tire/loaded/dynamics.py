@@ -391,7 +391,8 @@ def _modes_below(stiffness: sp.spmatrix, mass: sp.spmatrix, factor, omega_cut: f
     on the stiffness's ``factor``, asked for as many as there are (the negative pivots of
     :math:`K - \omega_{cut}^2 M`, Sylvester's law of inertia) with a tenth to spare; where that count
     is unavailable or falls short, the request grows like the frequency (a shell's modal density is
-    flat in frequency), with a quarter to spare, until the last mode found is above the cut-off."""
+    flat in frequency), with a quarter to spare, until the last mode found is above the cut-off; a
+    request past the cut-off that finds fewer than the count is made once more with a quarter more."""
     n = stiffness.shape[0]
     inverse = spla.LinearOperator((n, n), matvec=factor.solve, dtype=float)
     below = _count_below(stiffness, mass, omega_cut)
@@ -400,8 +401,12 @@ def _modes_below(stiffness: sp.spmatrix, mass: sp.spmatrix, factor, omega_cut: f
         values, vectors = spla.eigsh(stiffness, count, mass, sigma=0.0, which="LM", OPinv=inverse)
         order = np.argsort(values)
         values, vectors = values[order], vectors[:, order]
-        if values[-1] > omega_cut**2 or count == n - 2:
-            return vectors[:, values < omega_cut**2]
+        found = int(np.count_nonzero(values < omega_cut**2))
+        if count == n - 2 or (values[-1] > omega_cut**2 and (below is None or found >= below)):
+            return vectors[:, :found]
+        if values[-1] > omega_cut**2:  # past the cut-off yet short of the count: ask once for more, then trust it
+            count, below = min(n - 2, count + max(8, count // 4)), None
+            continue
         count = min(n - 2, int(np.ceil(1.25 * count * omega_cut / np.sqrt(max(values[-1], 1e-300)))) + 1)
 
 

@@ -95,7 +95,8 @@ def load_on_road(
             above = state
         else:
             below = state
-            secant = not by_secant  # the secant's step fell short (the tire softens here): plain steps from now on
+            if by_secant:  # the secant's step fell short (the tire softens here): road steps from now on
+                secant, step = False, road_step
     return _land(tire, inflated, load, below, above, road_step, road)
 
 

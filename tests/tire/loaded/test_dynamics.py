@@ -12,8 +12,10 @@ import dataclasses
 
 import numpy as np
 import pytest
+import scipy.sparse as sp
 
 from roadnoise_utils.tire.loaded import dynamics, footprint, road_contact, statics
+from roadnoise_utils.tire.symmetric_factor import SymmetricFactor
 
 FREQS = np.array([0.0, 100.0, 250.0, 400.0])
 
@@ -132,3 +134,18 @@ def test_the_tasselli_columns_are_symmetric_and_no_wider_than_the_rows(tire, loa
         mirrors = np.nonzero(np.abs(tasselli.node_y + y) < 1e-9)[0]
         assert mirrors.size and np.all(column[mirrors] == column.max() - column[node])
     assert tasselli.strip_width <= target + 1e-12
+
+
+@pytest.mark.parametrize("count", [None, 104, 120])
+def test_the_modes_below_the_cut_off_are_all_found_whatever_the_count_says(monkeypatch, count):
+    """A diagonal pencil with 104 eigenvalues below the cut-off: all of them, mass-normalised, whether the
+    inertia count is right (104), missing (None: the request grows from 24) or too high (120: one more request)."""
+    n = 300
+    values = np.linspace(1.0, 30.0, n) ** 2  # 104 of them below 11^2
+    stiffness, mass = sp.diags(values).tocsc(), sp.identity(n, format="csc") * 2.0
+    if count != 104:
+        monkeypatch.setattr(dynamics, "_count_below", lambda *args: count)
+    modes = dynamics._modes_below(stiffness, mass, SymmetricFactor(stiffness), 11.0 / np.sqrt(2.0))
+    expected = np.count_nonzero(values / 2.0 < 11.0**2 / 2.0)
+    assert modes.shape == (n, expected) and expected == 104
+    np.testing.assert_allclose(modes.T @ (mass @ modes), np.eye(expected), atol=1e-10)

@@ -19,11 +19,12 @@ from roadnoise_utils.tire.loaded.spec import from_dict
 from roadnoise_utils.tire.model import NotApplicable
 
 
-def test_the_load_case_is_carried_by_a_minimum_whatever_path_the_load_takes(
+def test_the_load_case_is_carried_by_a_minimum_reached_again_pressed_further_and_lifted_back(
     small_loaded, model_tire, model_inflated, model_state
 ):
-    """The model's state (one 7 mm road step from the inflated tire, then Brent's method), pressed a
-    tenth further and lifted back: the same equilibrium, its contact set and every displacement."""
+    """The model's state (one 7 mm road step from the inflated tire, then Brent's method) carries its load
+    at a minimum; pressed a tenth further and lifted back, the same equilibrium: its contact set and
+    every displacement (the load steps' own path independence: the statics' tests)."""
     tire, loaded = model_tire, model_state
     footprint = small_loaded.load(small_loaded.case())
     assert abs(loaded.road_force / small_loaded.default_load - 1) < loading.LOAD_TOLERANCE and loaded.stable
@@ -106,15 +107,21 @@ def test_a_road_step_newton_does_not_follow_is_halved_and_the_load_still_carried
     assert abs(halved.road_force - 600.0) < 1e-7 and halved.stable
 
 
-def test_where_the_tire_softens_the_secant_s_step_falls_short_once_then_plain_steps_reach_the_load(monkeypatch):
-    """A force growing like the square root of the lift (softening: every secant step falls short):
-    one secant step, then doubling steps up to ``road_step``, and the load is bracketed."""
+@pytest.mark.parametrize("exponent", [0.5, 0.25, 0.15])
+def test_where_the_tire_softens_the_secant_s_step_falls_short_once_then_road_steps_reach_the_load(
+    monkeypatch, exponent
+):
+    """A force growing like a power of the lift below one (softening: a secant step falls short): one
+    secant step, then road steps, no more solves than road steps alone would take plus one."""
     lifts = []
+
+    def force(lift: float) -> float:
+        return 1000.0 * (lift / 0.01) ** exponent
 
     def pressed(tire, inflated, lift, start, load, road_step, road):
         lifts.append(lift)
         assert len(lifts) < 50, "the steps never pass the load"
-        return SimpleNamespace(road_lift=lift, road_force=1000.0 * np.sqrt(lift / 0.01))
+        return SimpleNamespace(road_lift=lift, road_force=force(lift))
 
     monkeypatch.setattr(loading, "_pressed", pressed)
     monkeypatch.setattr(loading, "_land", lambda tire, inflated, load, below, above, *rest: (below, above))
@@ -123,9 +130,10 @@ def test_where_the_tire_softens_the_secant_s_step_falls_short_once_then_plain_st
     assert below.road_force < 1500.0 <= above.road_force
     steps = np.diff([0.0, *lifts])
     (short,) = np.nonzero(np.abs(steps - 0.004) > 1e-12)[0]  # one step sized by the secant, the others road steps
-    before = SimpleNamespace(road_lift=lifts[short - 1], road_force=1000.0 * np.sqrt(lifts[short - 1] / 0.01))
+    before = SimpleNamespace(road_lift=lifts[short - 1], road_force=force(lifts[short - 1]))
     assert steps[short] == pytest.approx(loading._secant_step(before, 1500.0), rel=1e-12) and steps[short] < 0.004
-    assert lifts[short] < lifts[-1] == above.road_lift and short == len(steps) - 2  # it fell short; one road step on
+    road_steps_alone = int(np.ceil(0.01 * (1500.0 / 1000.0) ** (1 / exponent) / 0.004))
+    assert len(lifts) <= road_steps_alone + 1
 
 
 def test_sticking_contact_and_what_it_lacks_are_refused_by_name(small_loaded, model_tire):
