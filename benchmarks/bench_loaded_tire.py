@@ -7,6 +7,7 @@ Run on demand (never as a timed test; the nonlinear loading takes minutes)::
     python benchmarks/bench_loaded_tire.py --no-nonlinear       # the linearised comparison alone
     python benchmarks/bench_loaded_tire.py --step 0.002         # road steps of 2 mm
     python benchmarks/bench_loaded_tire.py --convergence        # the tire file's mesh and two refinements
+    python benchmarks/bench_loaded_tire.py --file-modes         # the inflated modes on the tire file's mesh
 
 Both tires discretise the 165/65 R14 file's section at ``--crown`` and ``--sidewall`` elements;
 the swept solids take arcs of ``--arcs`` (m) over the footprint sector (+-0.28 rad), growing to
@@ -45,6 +46,7 @@ peak f1 of H_tot (a parabola through the 1 Hz samples), with the times.
 
 ``--modes N`` first compares the inflated, unloaded modes n = 0..6 on N uniform arcs with the
 waveguide's: each solid mode's harmonic is the one that carries most of its displacement.
+``--file-modes`` compares them on the loaded tire file's own graded mesh (``--loaded``).
 """
 
 from __future__ import annotations
@@ -63,7 +65,7 @@ from roadnoise_utils.guards import RoadnoiseWarning
 from roadnoise_utils.tire.cross_section import static as section_static
 from roadnoise_utils.tire.cross_section.checks import harmonic_frequencies
 from roadnoise_utils.tire.cross_section.operators import harmonic_operators
-from roadnoise_utils.tire.loaded import dynamics, footprint, linearised, road_contact, solid, statics
+from roadnoise_utils.tire.loaded import dynamics, footprint, linearised, road_contact, solid, stages, statics
 from roadnoise_utils.tire.loaded.mesh import graded_arcs
 from roadnoise_utils.tire.model import tire_model
 from roadnoise_utils.tire.symmetric_factor import SymmetricFactor
@@ -120,8 +122,8 @@ def harmonic_of_modes(tire, vectors: np.ndarray, top: int = 10) -> np.ndarray:
     return np.array(harmonics)
 
 
-def compare_modes(spec, n_arcs: int, count: int = 40) -> None:
-    tire = statics.build_loaded_tire(spec, np.linspace(-np.pi, np.pi, n_arcs + 1))
+def compare_modes(spec, tire: statics.LoadedTire, label: str, count: int = 40) -> None:
+    """The inflated, unloaded modes n = 0..6 of the solids on ``tire``'s mesh beside the waveguide of its section."""
     free = np.setdiff1d(np.arange(tire.n_dof), tire.fixed)
     mass = solid.mass_matrix(tire.groups, tire.n_dof)[free][:, free].tocsc()
     ops = harmonic_operators(tire.mesh.section, spec.laws(), spec.operating.inflation_pressure)
@@ -143,9 +145,7 @@ def compare_modes(spec, n_arcs: int, count: int = 40) -> None:
         for n in range(7):
             f = np.sqrt(values[order][harmonics == n]) / (2 * np.pi)
             found[name, n] = f if n == 0 else f[::2]  # n > 0: the cos and sin pair
-    print(
-        f"modes on {n_arcs} uniform arcs ({tire.n_dof} DOF), inflated and unloaded, Hz (deviation from the waveguide):"
-    )
+    print(f"modes on {label} ({tire.n_dof} DOF), inflated and unloaded, Hz (deviation from the waveguide):")
     print("  n  # | waveguide | round                | inflated")
     for n in range(7):
         for j, f_ref in enumerate(reference[n]):
@@ -317,6 +317,9 @@ def main() -> None:
     parser.add_argument(
         "--convergence", action="store_true", help="the loaded tire file's mesh and two refinements, flat road"
     )
+    parser.add_argument(
+        "--file-modes", action="store_true", help="the inflated modes n = 0..6 on the loaded tire file's own mesh"
+    )
     args = parser.parse_args()
     if args.drum:
         compare_on_drum(args.loaded)
@@ -324,11 +327,19 @@ def main() -> None:
     if args.convergence:
         mesh_convergence(args.loaded, CONVERGENCE_MESHES)
         return
+    if args.file_modes:
+        loaded = tire_model(args.loaded).spec
+        compare_modes(loaded.construction, stages.built_tire(loaded), f"the mesh of {args.loaded}")
+        return
     # one contact column per tassello column: the coarse crown's tread nodes are ~15 mm apart
     section = {"mesh.crown_elements": args.crown, "mesh.sidewall_elements": args.sidewall}
     spec = ru.load_tire(args.tire).replace(**section, **{"tasselli.strips_per_column": 1})
     if args.modes:
-        compare_modes(spec, args.modes)
+        compare_modes(
+            spec,
+            statics.build_loaded_tire(spec, np.linspace(-np.pi, np.pi, args.modes + 1)),
+            f"{args.modes} uniform arcs",
+        )
     states = waveguide(spec, LOADS)
     for arc in args.arcs:
         t0 = time.perf_counter()
