@@ -179,9 +179,8 @@ def published_comparison(
     change to the lightest and the heaviest load (:math:`K_v(F)/K_v(F_{nom})`: how the tire hardens)
     and to an inflation ``pressure_change`` (-) below and above its own at the nominal load (the
     model's file with the pressure changed; MF-Swift's force at a deflection scales with
-    :math:`1 + p_{Fz1}\\,dp_i`), and its contact
-    length at the nominal load (a model's footprint length: its contact points' extent, their
-    tributary lengths included; MF-Swift's :math:`2a`).
+    :math:`1 + p_{Fz1}\\,dp_i`), and its contact length at the nominal load (a model's footprint
+    length: its contact points' extent, their tributary lengths included; MF-Swift's :math:`2a`).
 
     Raises
     ------

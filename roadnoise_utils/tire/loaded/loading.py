@@ -79,9 +79,9 @@ def load_on_road(
         )
     step, failures, secant = road_step, 0, True
     while above is None:
-        by_secant = secant and _secant_step(below, load) < step
-        if by_secant:
-            step = _secant_step(below, load)
+        secant_step = _secant_step(below, load) if secant else float("inf")
+        by_secant = secant_step < step
+        step = min(step, secant_step)
         try:
             state = _pressed(tire, inflated, below.road_lift + step, below, load, road_step, road)
         except _NotFollowed:
