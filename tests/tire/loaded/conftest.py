@@ -37,8 +37,9 @@ def model_tire(small_loaded):
 
 
 @pytest.fixture(scope="session")
-def model_inflated(model_tire):
-    return statics.inflate(model_tire)
+def model_inflated(small_loaded):
+    """Its inflated state, the model's cached stage (the one its load cases start from)."""
+    return stages.inflated_state(small_loaded.spec)
 
 
 @pytest.fixture(scope="session")
