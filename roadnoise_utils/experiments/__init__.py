@@ -18,6 +18,7 @@ experiment                    what it runs                                      
 :func:`export_fmu`            any tire as an FMI 2.0 co-simulation FMU           15
 :func:`fmu_quarter_car`       the road test's quarter car co-simulated with it   15
 :func:`coupling_error`        that co-simulation's error at one step             15
+:mod:`loaded_tire`            the loaded FE tire's mesh, steps and load curves    16
 ============================  =================================================  ========
 
 ``*_conditions`` functions resolve a test's defaults (an argument left at ``None`` is the
@@ -35,6 +36,8 @@ from . import (
     design,
     design_sweep,
     fmu_export,
+    loaded_tire,
+    mf_swift,
     moving_hub,
     one_sided_cleat,
     paper_defaults,
@@ -70,6 +73,8 @@ __all__ = [
     "check_parameters",
     "bands",
     "cross_section",
+    "loaded_tire",
+    "mf_swift",
     "CleatConditions",
     "CleatRun",
     "CleatTest",

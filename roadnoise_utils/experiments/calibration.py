@@ -17,22 +17,29 @@ from ..repro.stages import Tire
 from ..response.modal_reduction import identify_modes
 from ..tire.model import tire_model
 
-#: Suffix of a cross-section tire file built for the same size as a ring tire file (same targets).
-CROSS_SECTION_SUFFIX = "_cross_section"
+#: Suffixes of the tire files of other models built for the same size as a ring tire file (same
+#: targets): the cross-section tire and the loaded FE tire.
+MODEL_SUFFIXES = ("_cross_section", "_loaded")
 
 
 def calibration_targets(tire: str) -> dict:
     """Targets of a tire (file stem in ``data/calibration``); empty when the tire has none.
 
-    A cross-section tire file ``<size>_cross_section`` shares the targets of ``<size>``: the
-    targets belong to the tire, not to the model of it.
+    A cross-section or loaded FE tire file (``<size>_cross_section``, ``<size>_loaded``) shares the
+    targets of ``<size>``: the targets belong to the tire, not to the model of it.
     """
     path = data_dir() / "calibration" / f"{tire}.toml"
-    if not path.exists() and tire.endswith(CROSS_SECTION_SUFFIX):
-        path = data_dir() / "calibration" / f"{tire.removesuffix(CROSS_SECTION_SUFFIX)}.toml"
+    for suffix in MODEL_SUFFIXES:
+        if not path.exists() and tire.endswith(suffix):
+            path = data_dir() / "calibration" / f"{tire.removesuffix(suffix)}.toml"
     if not path.exists():
         return {}
     return read_toml(path)
+
+
+def tire_targets(tire: Tire) -> dict:
+    """The targets of a tire (any model), found by its file's name (:func:`calibration_targets`)."""
+    return calibration_targets(Path(tire_model(tire).spec.source.split(" ")[0]).stem)
 
 
 def calibration_values(tire: Tire) -> dict[str, float]:
@@ -61,7 +68,7 @@ def calibration_table(tire: Tire = "165_65R14") -> pd.DataFrame:
     ``-``, ok ``True``): copy and edit a targets file to check your own tire.
     """
     model = tire_model(tire)
-    targets = calibration_targets(Path(model.spec.source.split(" ")[0]).stem)
+    targets = tire_targets(model)
     values = calibration_values(model)
     rows = []
     for name, value in values.items():

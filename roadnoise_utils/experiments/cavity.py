@@ -66,8 +66,9 @@ def split_against_load(conditions: CavityConditions | None = None) -> pd.DataFra
     """The loaded cavity's first doublet at each load: fore-aft and vertical frequency (Hz), their split,
     the first-order formula's split (module notes of :mod:`.tire.cavity`) and the static deflection (mm).
 
-    Any tire model with the capability ``cavity`` (:meth:`~.tire.model.TireModel.loaded_cavity_areas`:
-    the ring tire's belt and sidewall arcs, the cross-section tire's inner surface).
+    Any tire model with the capability ``cavity_shape`` (:meth:`~.tire.model.TireModel.loaded_cavity_areas`:
+    the ring tire's belt and sidewall arcs, the cross-section tire's inner surface, the loaded FE
+    tire's loaded solids).
     """
     test = cavity_conditions() if conditions is None else conditions
     model = tire_model(test.tire)

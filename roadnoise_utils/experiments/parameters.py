@@ -68,10 +68,32 @@ def _band_top(name: str, value: Any) -> float:
     return guards.real(name, value, 2.0, MAX_FREQUENCY, lo_open=True, unit="Hz")
 
 
+def _tires(name: str, value: Any) -> dict:
+    """Labels mapped to tire file names or paths (the models shown beside another)."""
+    if not isinstance(value, dict) or not all(isinstance(k, str) and k for k in value):
+        raise TypeError(f"{name} = {value!r}: give a dict of labels (non-empty strings) to tire file names")
+    for label, tire in value.items():
+        _file(f"{name}[{label!r}]", tire, "tires", "tire file")
+    return value
+
+
+def _loads(name: str, value: Any) -> list[float]:
+    """Increasing vertical loads (N), each within :data:`roadnoise_utils.guards.LOAD_RANGE`."""
+    if isinstance(value, str) or not hasattr(value, "__len__") or len(value) < 1:
+        raise TypeError(f"{name} = {value!r}: give a list of one or more loads (N)")
+    loads = [guards.real(f"{name}[{i}]", v, *guards.LOAD_RANGE, unit="N") for i, v in enumerate(value)]
+    if any(b <= a for a, b in zip(loads, loads[1:])):
+        raise ValueError(f"{name} = {value!r}: give strictly increasing loads (N)")
+    return loads
+
+
 #: Each parameter's check: ``check(name, value)`` raises, naming both, when the value is not valid.
 CHECKS: dict[str, Callable[[str, Any], Any]] = {
     "tire_name": _tire,
     "ring_name": _tire,
+    "loaded_tire": _tire,
+    "beside": _tires,
+    "loads": _loads,
     "vehicle_name": lambda name, value: _file(name, value, "vehicles", "vehicle file"),
     "tire_size": _tire_size,
     "car_tire_size": _car_tire_size,

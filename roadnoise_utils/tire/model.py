@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import dataclasses
 from abc import ABC, abstractmethod
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from types import ModuleType
@@ -61,7 +61,8 @@ CAPABILITIES = {
     "released_hub": "FE solve of the tire with its hub released on a suspension (the moving hub's reference)",
     "direct_response": "FE reference of a road input (the hub force straight from the FE model, no fit)",
     "one_sided_cleat": "cleat test with one-sided contact (the tread lifting off the drum)",
-    "cavity": "air cavity coupled to the tire",
+    "cavity": "air cavity coupled to the tire (its FRFs with the cavity)",
+    "cavity_shape": "air cavity's section round the loaded wheel (its first doublet's split against the load)",
     "rolling_cavity": "fixed-hub FRFs with the cavity's air streaming round the rolling wheel",
 }
 
@@ -303,6 +304,11 @@ class TireModel(ABC):
     def load(self, case: LoadCase) -> Footprint:
         """The tire loaded on ``case``: footprint, pressures, tasselli, K_v (cached where costly)."""
 
+    def load_curve(self, loads: Sequence[float]) -> list[Footprint]:
+        """The tire on the flat road at each of ``loads`` (N, increasing): one :meth:`load` per load; a
+        model with a nonlinear loading continues one loading through them instead."""
+        return [self.load(self.case("flat", load)) for load in loads]
+
     @abstractmethod
     def fixed_hub_frfs(
         self, case: LoadCase, freqs: np.ndarray | None = None, progress: bool = False, stick: bool | None = None
@@ -371,14 +377,14 @@ class TireModel(ABC):
 
     def air_cavity(self, temperature: float | None = None) -> Cavity:
         """The tire's air cavity, unloaded (``temperature`` in deg C; default the tire file's ``[cavity]``)."""
-        raise NotApplicable(self.kind, "cavity")
+        raise NotApplicable(self.kind, "cavity_shape")
 
     def loaded_cavity_areas(
         self, loads: tuple[float, ...], temperature: float | None = None
     ) -> tuple[list[Footprint], np.ndarray]:
         """The tire on the flat road at each of ``loads`` (N) and its cavity's Webster area round the
         wheel in each (m^2, one row per load; :func:`roadnoise_utils.tire.cavity.webster_modes`)."""
-        raise NotApplicable(self.kind, "cavity")
+        raise NotApplicable(self.kind, "cavity_shape")
 
     def rolling_cavity_frfs(self, case: LoadCase, freqs: np.ndarray, flow_speed: float) -> FRFResult:
         """The fixed-hub FRFs at ``freqs`` (Hz) with the cavity's air streaming at ``flow_speed`` (m/s)

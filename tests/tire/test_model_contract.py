@@ -106,7 +106,7 @@ def test_a_capability_works_or_says_not_applicable_by_name(model):
 #: Each optional capability -> a call of the method that needs it.
 CAPABILITY_CALLS = {
     "fe_mesh": lambda m: m.equivalent_dof(),
-    "cavity": lambda m: m.air_cavity(),
+    "cavity_shape": lambda m: m.air_cavity(),
     "one_sided_cleat": lambda m: m.one_sided_setup(ru.experiments.one_sided_conditions()),
     "released_hub": lambda m: m.released_hub(m.case("flat"), np.array([10.0]), 30.0, 2e4, 1e3),
     "rolling_cavity": lambda m: m.rolling_cavity_frfs(m.case("flat"), np.array([10.0]), 1.0),
@@ -123,7 +123,7 @@ def test_a_method_of_a_capability_the_model_lacks_says_so_by_name(model, capabil
             call(model)
     elif capability == "fe_mesh":
         assert call(model) > 1000
-    elif capability == "cavity":
+    elif capability == "cavity_shape":
         assert call(model).area > 0 and call(model).mean_radius > 0
 
 

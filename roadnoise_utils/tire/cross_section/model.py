@@ -43,7 +43,7 @@ class CrossSectionModel(TireModel):
 
     kind = "cross-section"
     capabilities = frozenset(
-        {"fe_mesh", "hub_transfer", "modal_reduction", "direct_response", "one_sided_cleat", "cavity"}
+        {"fe_mesh", "hub_transfer", "modal_reduction", "direct_response", "one_sided_cleat", "cavity", "cavity_shape"}
     )
     contact_dt = CONTACT_DT
 

@@ -3,20 +3,23 @@
 The paper's own kind of FE tire: the construction swept into 3-D solids, mounted, inflated and
 pressed on the road by large-deformation statics, its dynamics linearised about that loaded
 state. Its stages are cached by :mod:`roadnoise_utils.tire.loaded.stages`; this class answers the pipeline's calls with them.
-It stands on the flat road or a drum (frictionless one-sided contact); the one-sided cleat, the
-modal reduction and the air cavity are not part of it
-(:meth:`~roadnoise_utils.tire.model.TireModel.require` says so).
+It stands on the flat road or a drum (frictionless one-sided contact); its air cavity's section
+round the loaded wheel is computed from the loaded solids (:mod:`.cavity`, the capability
+``cavity_shape``); the one-sided cleat, the modal reduction and the cavity coupled into the FRFs
+are not part of it (:meth:`~roadnoise_utils.tire.model.TireModel.require` says so).
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from ..model import Footprint, FRFResult, LoadCase, TireModel, register
-from . import dynamics, loading, road_contact, stages, statics
+from ..cavity import Cavity
+from ..model import Footprint, FRFResult, LoadCase, NotApplicable, TireModel, register
+from . import cavity, dynamics, loading, road_contact, stages, statics
 from .spec import LoadedSpec, from_dict
 
 
@@ -25,7 +28,7 @@ class LoadedFEModel(TireModel):
     """The 3-D FE tire linearised about its nonlinear loaded state (:mod:`roadnoise_utils.tire.loaded`)."""
 
     kind = "loaded-fe"
-    capabilities = frozenset({"fe_mesh", "hub_transfer"})
+    capabilities = frozenset({"fe_mesh", "hub_transfer", "cavity_shape"})
 
     @classmethod
     def parse(cls, data: dict[str, Any], source: str, path: Path | None = None) -> LoadedSpec:
@@ -53,6 +56,10 @@ class LoadedFEModel(TireModel):
         """:func:`roadnoise_utils.tire.loaded.stages.loaded_footprint` (cached): the loaded state on the case's road."""
         return stages.loaded_footprint(self.spec, case)
 
+    def load_curve(self, loads: Sequence[float]) -> list[Footprint]:
+        """:func:`roadnoise_utils.tire.loaded.stages.load_curve` (cached): one loading through ``loads`` (N, increasing)."""
+        return stages.load_curve(self.spec, tuple(loads))
+
     def fixed_hub_frfs(
         self, case: LoadCase, freqs: np.ndarray | None = None, progress: bool = False, stick: bool | None = None
     ) -> FRFResult:
@@ -63,4 +70,17 @@ class LoadedFEModel(TireModel):
                 "stick = True: the loaded FE tire's contact nodes slide freely (frictionless, held vertically "
                 "only); valid values are None or False"
             )
+        if self.spec.construction.cavity.enabled:
+            raise NotApplicable(self.kind, "cavity")  # its FRFs do not couple the air: refuse, never ignore it
         return stages.loaded_frfs(self.spec, case, freqs)
+
+    def air_cavity(self, temperature: float | None = None) -> Cavity:
+        """:func:`roadnoise_utils.tire.loaded.cavity.air_cavity`: the construction's cavity, unloaded."""
+        return cavity.air_cavity(stages.built_tire(self.spec), temperature)
+
+    def loaded_cavity_areas(
+        self, loads: tuple[float, ...], temperature: float | None = None
+    ) -> tuple[list[Footprint], np.ndarray]:
+        """:func:`roadnoise_utils.tire.loaded.stages.cavity_areas`: one loading through ``loads`` (N, increasing;
+        cached) and the cavity's Webster area round the wheel in each state."""
+        return stages.cavity_areas(self.spec, tuple(loads), temperature)

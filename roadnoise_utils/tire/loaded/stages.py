@@ -9,18 +9,23 @@ stage                     caches
 :func:`loaded_footprint`  the state as every model's footprint (:func:`.footprint.loaded_footprint`)
 :func:`loaded_frfs`       the dynamics linearised about it, reduced and swept
                           (:func:`.dynamics.footprint_frf`), on the footprint's tasselli
+:func:`swept_states`      one loading through several loads on the flat road (:func:`.loading.load_sweep`)
+:func:`load_curve`        their footprints
+:func:`round_stiffness`   K_v with the geometric nonlinearity off (:mod:`.linearised`)
 ========================  =========================================================================
 
-:func:`built_tire` (the swept mesh and its integration points: about a second) is not cached.
+:func:`built_tire` (the swept mesh and its integration points: about a second) and :func:`cavity_areas`
+(the loaded cavity's section round the wheel from the swept states: a fraction of a second) are not cached.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from ... import guards
 from ...repro.cache import cached
 from ..model import DEFAULT_FREQS, Footprint, FRFResult, LoadCase
-from . import dynamics, footprint, loading, road_contact, statics
+from . import cavity, dynamics, footprint, linearised, loading, road_contact, statics
 from .mesh import graded_arcs
 from .spec import LoadedSpec
 from .statics import LoadedTire, StaticState
@@ -81,3 +86,53 @@ def loaded_frfs(spec: LoadedSpec, case: LoadCase, freqs: np.ndarray | None = Non
 
     inputs = {"tire": spec, **case.key(), "freqs": freqs}
     return cached(loaded_frfs, inputs, compute, runs=(dynamics, footprint, loading, road_contact, statics))
+
+
+def swept_states(spec: LoadedSpec, loads: tuple[float, ...]) -> list[StaticState]:
+    """Cached: the tire at each of ``loads`` (N, increasing) on the flat road, one loading from
+    :func:`inflated_state` continued from load to load (:func:`.loading.load_sweep`)."""
+    loads = tuple(guards.real("loads", load, *guards.LOAD_RANGE, unit="N") for load in loads)
+
+    def compute() -> list[StaticState]:
+        return loading.load_sweep(built_tire(spec), inflated_state(spec), list(loads), spec.solid_mesh.road_step)
+
+    inputs = {"tire": spec, "road": "flat", "loads": loads}
+    return cached(swept_states, inputs, compute, runs=(loading, road_contact, statics))
+
+
+def load_curve(spec: LoadedSpec, loads: tuple[float, ...]) -> list[Footprint]:
+    """Cached: the footprint (its tangent K_v included) of each of :func:`swept_states`."""
+    states = swept_states(spec, loads)
+
+    def compute() -> list[Footprint]:
+        tire = built_tire(spec)
+        return [footprint.loaded_footprint(tire, state, load) for state, load in zip(states, loads)]
+
+    inputs = {"tire": spec, "road": "flat", "loads": tuple(float(load) for load in loads)}
+    return cached(load_curve, inputs, compute, runs=(footprint, loading, road_contact, statics))
+
+
+def cavity_areas(
+    spec: LoadedSpec, loads: tuple[float, ...], temperature: float | None = None
+) -> tuple[list[Footprint], np.ndarray]:
+    """The footprints of :func:`load_curve` and the cavity's Webster area round the wheel in each of
+    :func:`swept_states` (:func:`.cavity.webster_area`, (n_loads, :data:`.cavity.N_ANGLES`) m^2)."""
+    tire = built_tire(spec)
+    air = cavity.air_cavity(tire, temperature)
+    areas = np.array([cavity.webster_area(tire, state, air) for state in swept_states(spec, loads)])
+    return load_curve(spec, loads), areas
+
+
+def round_stiffness(spec: LoadedSpec, load: float) -> float:
+    """Cached: K_v (N/m) at ``load`` (N) on the flat road with the geometric nonlinearity switched off, the
+    solids linearised about the round tire under its linear inflation as the waveguide tire is
+    (:func:`.linearised.round_linearisation`), the one-sided contact solved on that linear tire."""
+    load = guards.real("load", load, *guards.LOAD_RANGE, unit="N")
+
+    def compute() -> float:
+        tire = built_tire(spec)
+        rounded = linearised.round_linearisation(tire)
+        compliance = linearised.contact_compliance(tire, rounded.state, tangent=rounded.tangent)
+        return linearised.flat_road_at_load(compliance, load).stiffness
+
+    return cached(round_stiffness, {"tire": spec, "road": "flat", "load": load}, compute, runs=(linearised, statics))

@@ -44,6 +44,7 @@ class RingModel(TireModel):
             "direct_response",
             "one_sided_cleat",
             "cavity",
+            "cavity_shape",
             "rolling_cavity",
         }
     )

@@ -1,0 +1,150 @@
+"""What the loaded FE tire's chapter shows: its mesh, its load steps, what the loaded state changes.
+
+The loaded FE tire (``[tire] model = "loaded-fe"``, :mod:`roadnoise_utils.tire.loaded`) is the
+paper's own kind of FE tire ("The FET Model": mounting, inflation and vertical loading by nonlinear
+statics, the dynamics linearised about that loaded state). Beside it, any other tire model through
+the interface: the same load on the same road, the same numbers.
+
+=============================  ==================================================================
+function                       what it gives
+=============================  ==================================================================
+:func:`mesh_summary`           the solid mesh's size (DOF, elements, arcs) and its footprint grading
+:func:`newton_steps`           each load step's Newton iterations, contact-set updates and order
+:func:`load_curves`            deflection, tangent K_v and footprint size against load, per model
+:func:`round_stiffness`        the K_v with the geometric nonlinearity switched off (the round tire)
+:func:`cleat_sampling`         the quasi-static cleat peak with three ways of sampling the cleat
+=============================  ==================================================================
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+
+import numpy as np
+import pandas as pd
+
+from ..repro.stages import Tire
+from ..tire.loaded import stages
+from ..tire.loaded.model import LoadedFEModel
+from ..tire.loaded.statics import StaticState
+from ..tire.model import TireModel, tire_model
+from .cleat import point_sampled_peak, quasi_static_peak
+
+#: Relative out-of-balance force below which a Newton iteration is at round-off (its order is not measured
+#: there): the production mesh's converged states end at 2e-13.
+ROUND_OFF = 1e-12
+
+
+def loaded_model(tire: Tire) -> LoadedFEModel:
+    """``tire`` as the loaded FE tire's model; any other model is refused naming the one it is."""
+    model = tire_model(tire)
+    if not isinstance(model, LoadedFEModel):
+        raise ValueError(f"tire = {tire!r}: a {model.kind!r} tire; this needs a {LoadedFEModel.kind!r} tire file")
+    return model
+
+
+def mesh_summary(tire: Tire) -> pd.Series:
+    """The solid mesh of a loaded FE tire: its size and its grading around the wheel (mm where a length)."""
+    model = loaded_model(tire)
+    built = stages.built_tire(model.spec)
+    mesh = built.mesh
+    ends = np.append(mesh.theta[::2], mesh.theta[0] + 2.0 * np.pi)
+    arcs = np.diff(ends) * model.spec.construction.geometry.outer_radius
+    return pd.Series(
+        {
+            "degrees of freedom": built.n_dof,
+            "free degrees of freedom (beads held on the rim)": built.n_dof - built.fixed.size,
+            "nodes": mesh.n_nodes,
+            "27-node solid elements": mesh.elements.shape[0],
+            "section elements (swept)": mesh.section.elements.shape[0],
+            "arcs around the wheel": mesh.n_arcs,
+            "shortest arc at the tread (mm)": 1e3 * arcs.min(),
+            "longest arc at the tread (mm)": 1e3 * arcs.max(),
+            "tread nodes across the crown": 2 * model.spec.solid_mesh.crown_elements + 1,
+        },
+        dtype=object,  # the counts stay integers
+    )
+
+
+def newton_steps(state: StaticState) -> pd.DataFrame:
+    """Each load step of a static state (inflation first): its contact sets, Newton iterations, the
+    relative out-of-balance force of each iteration with the final contact set (the set fixed), and
+    their convergence order.
+
+    The order is :math:`\\log(r_{k+1}/r_k) / \\log(r_k/r_{k-1})` of the last three relative residuals
+    above round-off (:data:`ROUND_OFF`): 2 for Newton's quadratic convergence with a consistent
+    tangent, 1 for a linear one; NaN where fewer than three lie above round-off.
+    """
+    rows = []
+    for step, sets in enumerate(state.history):
+        final = np.asarray(sets[-1], dtype=float)
+        above = final[final > ROUND_OFF]
+        order = np.nan
+        if above.size >= 3:
+            r0, r1, r2 = above[-3:]
+            order = np.log(r2 / r1) / np.log(r1 / r0)
+        rows.append(
+            {
+                "step": "inflation" if step == 0 else f"road step {step}",
+                "contact sets": len(sets),
+                "Newton iterations": sum(len(s) for s in sets),
+                "last residual": float(final[-1]),
+                "residuals, contact set fixed": " ".join(f"{r:.0e}" for r in final),
+                "order of the last iterations": order,
+            }
+        )
+    return pd.DataFrame(rows).set_index("step")
+
+
+def load_curves(tires: Mapping[str, Tire], loads: Sequence[float]) -> pd.DataFrame:
+    """Deflection, tangent K_v and footprint size on the flat road at each of ``loads`` (N), per model.
+
+    Each model's :meth:`~roadnoise_utils.tire.model.TireModel.load_curve`: the loaded FE tire's one
+    loading through the loads, any other model's cached static solve at each load. One row per model and load:
+    ``model``, ``load (kN)``, ``deflection (mm)``, ``K_v (N/mm)``, ``footprint length (mm)``,
+    ``footprint width (mm)``, ``peak pressure (kPa)``.
+    """
+    loads = tuple(sorted(loads))
+    rows = []
+    for label, tire in tires.items():
+        for f in tire_model(tire).load_curve(loads):
+            rows.append(
+                {
+                    "model": label,
+                    "load (kN)": f.load / 1e3,
+                    "deflection (mm)": 1e3 * f.deflection,
+                    "K_v (N/mm)": f.vertical_stiffness / 1e3,
+                    "footprint length (mm)": 1e3 * f.footprint_length,
+                    "footprint width (mm)": 1e3 * f.footprint_width,
+                    "peak pressure (kPa)": f.node_pressure.max() / 1e3,
+                }
+            )
+    return pd.DataFrame(rows)
+
+
+def round_stiffness(tire: Tire, load: float | None = None) -> float:
+    """The loaded FE tire's K_v (N/m) at ``load`` (N; default its file's) with the geometric nonlinearity
+    switched off: linearised about the round tire under its linear inflation, as the waveguide tire
+    is, the flat road's contact solved on that linear tire (:func:`.tire.loaded.stages.round_stiffness`,
+    cached)."""
+    model = loaded_model(tire)
+    return stages.round_stiffness(model.spec, model.default_load if load is None else load)
+
+
+def cleat_sampling(tire: TireModel | Tire, height: float, base: float, drum_radius: float) -> pd.Series:
+    """The quasi-static cleat peak :math:`\\max_X \\sum_i H_i(0)\\,u_i(X)` (N) on the drum, the cleat
+    (``height``, ``base``: m, a triangle) sampled three ways: averaged over each contact node's shape
+    function (the RM chain's input, :func:`.cleat.quasi_static_peak`), at the contact nodes (an FE
+    model's nodal road) and at the tassello centres (:func:`.cleat.point_sampled_peak`). Any tire
+    model with FRFs at 0 Hz."""
+    model = tire_model(tire)
+    case = model.case("drum", None, drum_radius)
+    static = model.load(case)
+    h0 = model.fixed_hub_frfs(case, np.array([0.0])).H[:, 0].real
+    return pd.Series(
+        {
+            "averaged over the nodes' shape functions": quasi_static_peak(model, height, base, "triangle", drum_radius),
+            "at the contact nodes": point_sampled_peak(static, h0, height, base, at="nodes"),
+            "at the tassello centres": point_sampled_peak(static, h0, height, base, at="centres"),
+        }
+    )

@@ -1,0 +1,66 @@
+"""Figures of notebook 16-loaded-fe-tire: the loaded shape beside the round tire, curves against load."""
+
+from __future__ import annotations
+
+import matplotlib.pyplot as plt
+import numpy as np
+import pandas as pd
+
+from ..tire.loaded.statics import LoadedTire, StaticState
+from .common import MM
+
+
+def centre_line(tire: LoadedTire, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Fore-aft and vertical position (m) of the tread's centre line displaced by ``u``, round the wheel in order."""
+    mesh = tire.mesh
+    section = mesh.section
+    centre = section.node(section.n_stations // 2, section.n_rows - 1)
+    rings = np.argsort(mesh.theta)
+    nodes = mesh.node(rings, centre)
+    position = mesh.coordinates[nodes] + u.reshape(-1, 3)[nodes]
+    return position[:, 0], position[:, 2]
+
+
+def plot_loaded_side_view(
+    tire: LoadedTire, state: StaticState, window: float = 0.2, ax: plt.Axes | None = None
+) -> plt.Axes:
+    """The tread's centre line near the footprint: round (mounted, unloaded), loaded, and the road,
+    with a marker at every ring of nodes (the mesh's grading along the wheel); ``window`` (m) either side."""
+    if ax is None:
+        _, ax = plt.subplots(figsize=(8, 3.5))
+    x0, z0 = centre_line(tire, np.zeros(tire.n_dof))
+    x, z = centre_line(tire, state.u)
+    near = np.abs(x0) < window
+    ax.plot(x0[near] * MM, z0[near] * MM, "--", color="0.5", label="round tire (mounted, unloaded)")
+    ax.plot(x[near] * MM, z[near] * MM, "o-", ms=3, color="tab:blue", label="loaded (a marker per ring of nodes)")
+    ax.axhline(state.road_top * MM, color="k", lw=1.0, label=f"road: {state.road.kind}, {state.road_force:.0f} N")
+    ax.set_xlabel("x (mm), direction of travel →")
+    ax.set_ylabel("z (mm)")
+    ax.set_title(f"the tread's centre line: {state.contact.size} tread nodes held on the road")
+    ax.legend(fontsize=8, loc="upper center")
+    return ax
+
+
+def plot_against_load(
+    table: pd.DataFrame,
+    column: str,
+    ax: plt.Axes | None = None,
+    target: tuple[float, float, str] | None = None,
+    nominal: float | None = None,
+) -> plt.Axes:
+    """One curve per model of ``column`` against load (:func:`~roadnoise_utils.experiments.loaded_tire.load_curves`);
+    ``target`` = (low, high, source) drawn as a band at the ``nominal`` load (N)."""
+    if ax is None:
+        _, ax = plt.subplots(figsize=(6, 4))
+    for model, rows in table.groupby("model", sort=False):
+        ax.plot(rows["load (kN)"], rows[column], "o-", label=model)
+    if target is not None and nominal is not None:
+        low, high, source = target
+        ax.errorbar(
+            nominal / 1e3, (low + high) / 2, yerr=(high - low) / 2, fmt="none", ecolor="tab:purple",
+            capsize=6, lw=2, label=f"target at {nominal / 1e3:.2f} kN: {source}",
+        )  # fmt: skip
+    ax.set_xlabel("vertical load (kN)")
+    ax.set_ylabel(column)
+    ax.legend(fontsize=7)
+    return ax
