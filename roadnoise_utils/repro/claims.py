@@ -2,13 +2,14 @@
 
 The claims, what the paper says, the tolerance and the notebook live in
 ``data/paper/claims.toml``; :mod:`.evaluators` computes *our* number for each claim on each tire
-model (the ring and the cross-section tire, :data:`MODELS`) with the same experiments and
-cached stages the notebooks call, and this module judges it with the data's test.
-:func:`report` is the table notebook 00 and the reproduction command show, one column per tire
-model; :func:`write_report` writes it as CSV and Markdown.
+model (the ring, the cross-section tire and the loaded FE tire, :data:`MODELS`) with the same
+experiments and cached stages the notebooks call, and this module judges it with the data's test.
+:func:`report` is the table the chapters show (one column per model of :data:`OVERVIEW_MODELS`)
+and the reproduction command writes (one per model of :data:`MODELS`); :func:`write_report`
+writes it as CSV and Markdown.
 
-A claim states per model a documented deviation (``known_deviation`` for the ring,
-``known_deviation_cross_section``) or why it does not apply (``not_applicable_cross_section``).
+A claim states per model a documented deviation (``[claim.known_deviation]``, one entry per model
+kind) or why it does not apply (``[claim.not_applicable]``).
 A check *beyond the paper* (``beyond``: the feature, e.g. the whole car) states what it is
 compared with (``compared_with``: a closed form, a cited measurement); the report marks it and
 counts it apart from the paper's claims.
@@ -24,7 +25,8 @@ import numpy as np
 import pandas as pd
 
 from ..tire.model import NotApplicable
-from .evaluators import EVALUATORS, MODELS
+from .evaluators import EVALUATORS, OVERVIEW_MODELS
+from .evaluators import MODELS as MODELS  # the reproduction report's columns, re-exported
 from .evaluators import transmissibility_bands as transmissibility_bands  # Fig. 10's bands, re-exported
 from .paths import data_dir, read_toml
 
@@ -136,11 +138,14 @@ def report(
     notebook: str | None = None,
     claims: list[dict] | None = None,
     evaluators: dict[str, Callable[[str], float]] | None = None,
-    models: tuple[str, ...] = MODELS,
+    models: tuple[str, ...] = OVERVIEW_MODELS,
 ) -> pd.DataFrame:
     """One row per claim: claim, where, paper, tolerance, notebook, and per tire model ``m``
     the columns ``ours (m)``, ``verdict (m)`` (pass, fail or n/a) and ``deviation (m)`` (the
     documented deviation of a failed claim, or why it does not apply).
+
+    ``models``: default the chapters' (:data:`OVERVIEW_MODELS`, which the test suite computes); the
+    reproduction's report takes every model of ``data/paper/report.toml`` (:data:`MODELS`).
 
     ``notebook`` keeps the claims shown by one notebook; ``claims``/``evaluators`` replace the
     data file and the evaluators (tests; an evaluator takes the model name).

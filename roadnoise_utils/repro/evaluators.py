@@ -39,12 +39,12 @@ from . import stages
 from .paths import data_dir, read_toml
 
 #: The report's tire models and their tire files by role, from ``data/paper/report.toml``.
-TIRES = {
-    m["kind"]: {role: m[role] for role in ("paper", "check")}
-    for m in read_toml(data_dir() / "paper" / "report.toml")["model"]
-}
+_REPORT_MODELS = read_toml(data_dir() / "paper" / "report.toml")["model"]
+TIRES = {m["kind"]: {role: m[role] for role in ("paper", "check")} for m in _REPORT_MODELS}
 #: The tire models, in the report's column order.
 MODELS = tuple(TIRES)
+#: The models notebook 00 shows (``overview = false`` in the file: the reproduction's report only).
+OVERVIEW_MODELS = tuple(m["kind"] for m in _REPORT_MODELS if m.get("overview", True))
 
 
 def tire_of(model: str, role: str = "paper") -> str:
@@ -207,7 +207,7 @@ def _cavity_tire(model: str) -> str:
 
 
 def _rated_load(model: str) -> float:
-    return float(stages.load_tire(_cavity_tire(model)).operating.vertical_load)
+    return float(tire_model(_cavity_tire(model)).default_load)
 
 
 EVALUATORS: dict[str, Callable[[str], float]] = {

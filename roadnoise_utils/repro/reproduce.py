@@ -252,9 +252,9 @@ def start_order(paths: list[Path], seconds: dict[Path, float]) -> list[Path]:
 def _evaluated_claims(one_thread: bool):
     """The claims report (:func:`.claims.report`), in a worker of the notebooks' pool."""
     if not one_thread:
-        return claims.report()
+        return claims.report(models=claims.MODELS)
     with threadpool_limits(1):
-        return claims.report()
+        return claims.report(models=claims.MODELS)
 
 
 def _execute_all(
@@ -400,7 +400,7 @@ def main(argv: list[str] | None = None) -> int:
         parser.error(f"--figures {out}: {problem}")
     if args.report_only:
         print("evaluating the paper's claims ...")
-        table = claims.report()
+        table = claims.report(models=claims.MODELS)
         claims.write_report(table, out)
         return _summary(table, out)
     ready = [nb for nb in notebooks() if nb["status"] == "ready"]

@@ -50,7 +50,9 @@ def test_each_tire_model_gets_its_column_deviations_and_exemptions():
     ]
     values = {"ring": 10.0, "cross-section": 20.0}
     evaluated = []
-    table = claims.report(claims=two, evaluators={"a": values.get, "b": lambda m: evaluated.append(m) or 0.5})
+    table = claims.report(
+        claims=two, evaluators={"a": values.get, "b": lambda m: evaluated.append(m) or 0.5}, models=tuple(values)
+    )
     assert evaluated == ["ring"]  # not run where it does not apply
     assert list(table["verdict (ring)"]) == ["pass", "pass"]
     assert list(table["verdict (cross-section)"]) == ["fail", "n/a"]
@@ -67,9 +69,17 @@ def test_an_undocumented_failure_makes_the_exit_status_non_zero(tmp_path, monkey
     assert claims.exit_status(failing) == 1
     with pytest.raises(AssertionError, match="a on ring .paper 10, ours 20"):
         claims.check(failing)
-    monkeypatch.setattr(claims, "report", lambda: failing)
+    monkeypatch.setattr(claims, "report", lambda **_: failing)
     assert reproduce.main(["--report-only", "--figures", str(tmp_path)]) == 1
     assert (tmp_path / "reproduction-report.md").exists()
+
+
+def test_the_overview_shows_the_report_s_models_but_those_it_leaves_to_the_reproduction():
+    """notebook 00 (run by the test suite) shows the models of ``OVERVIEW_MODELS``; the loaded FE tire's
+    production stages (~10 CPU-minutes) are the reproduction report's only."""
+    assert set(claims.OVERVIEW_MODELS) < set(claims.MODELS)
+    assert "loaded-fe" in claims.MODELS and "loaded-fe" not in claims.OVERVIEW_MODELS
+    assert [m for m in claims.MODELS if m in claims.OVERVIEW_MODELS] == list(claims.OVERVIEW_MODELS)  # same order
 
 
 def test_judge_tests():
