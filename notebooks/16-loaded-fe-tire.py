@@ -90,11 +90,13 @@ print(summary.to_string(float_format=lambda v: f"{v:.1f}"))
 #
 # The beads are held on the rim; the pressure is applied in one step (a follower load: it turns
 # with the inner surface); then the road rises in steps, each step's contact set updated until
-# no held node pulls and no free node goes through the road. Newton's method with the exact
-# tangent converges quadratically once the contact set is fixed: in the table's residuals
-# (relative out-of-balance force, each step's first value the state it starts from) the exponent
-# roughly doubles from one iteration to the next until round-off, near 1e-13. The last column
-# estimates the order from the last three residuals above round-off (2: quadratic).
+# no held node pulls and no free node goes through the road. With the contact set fixed,
+# Newton's method with the exact tangent (checked against finite differences in the tests)
+# converges superlinearly: in the table's residuals (relative out-of-balance force, each step's
+# first value the state it starts from) the exponent grows faster from one iteration to the
+# next until the convergence tolerance or round-off. The last column estimates the order from
+# the last three residuals above round-off (1: linear, 2: quadratic); three residuals make it a
+# rough estimate, and it falls where the last one only just passes the tolerance.
 
 # %%
 # NBVAL_IGNORE_OUTPUT
@@ -156,9 +158,9 @@ for label, f in footprints.items():
 # ## 4. What the loaded state changes, against load
 #
 # A tire linearised about its round state has a load-deflection curve only through its
-# contact: as the footprint grows, more tread points carry the road. The loaded FE tire also
-# changes its own stiffness with the load: its sidewalls bulge, its belt flattens over the
-# footprint and its pre-stress redistributes. Below, the tangent $K_v$ and the footprint's
+# contact: as the footprint grows, more tread points carry the road. The loaded FE tire's
+# stiffness is also that of its loaded geometry and pre-stress, which change with the load.
+# Below, the tangent $K_v$ and the footprint's
 # length against load, every model on the flat road, with the calibration targets of this
 # size at the nominal load (`data/calibration`).
 
@@ -201,13 +203,11 @@ print(f"{published.name}, at {shares[0]:.2f} and {shares[-1]:.2f} of its nominal
 # %% [markdown]
 # The two linear models stiffen with the load through their contact alone: as the footprint
 # grows, more tread points carry the road, and their $K_v$ rises steeply with it. The loaded FE
-# tire stiffens much less, about as much as the published tire's measured curve (MF-Swift's
-# quadratic $F_z(\rho)$ of a tire of similar size, taken at the same shares of its nominal load):
-# where the footprint grows, its sidewalls bulge further and its belt flattens over a longer
-# arc, and the pre-stress of the loaded state softens what the larger contact adds. Its tangent
-# $K_v$ wavers from load to load by a few per cent where a ring of tread nodes enters the
-# footprint (its arcs there are 20 mm long). The ring warns at the heaviest load: its linear
-# belt is stretched beyond a third of its section height.
+# tire stiffens much less over the same loads, about as much as the published tire's measured
+# curve (MF-Swift's quadratic $F_z(\rho)$ of a tire of similar size, taken at the same shares of
+# its nominal load). Its tangent $K_v$ does not grow smoothly: its contact set grows by whole
+# nodes (nine across the crown, rings 10 mm apart along the footprint's 20 mm arcs), each a step
+# in $K_v$, and at the heaviest loads the footprint runs past the sector of short arcs.
 
 # %% [markdown]
 # ### The air cavity's split against load
@@ -264,11 +264,11 @@ print(f"measured: {exponent_claim['min']:g} to {exponent_claim['max']:g} ({expon
 # On the linear models the split grows in proportion to the load although their deflection
 # grows more slowly: their cavity's section changes linearly with the contact forces, whose sum
 # is the load, whatever the footprint's shape. On the loaded FE tire the area the footprint
-# takes from the cavity is a function of the loaded geometry — the deflection, which grows
+# takes from the cavity is read from the loaded geometry itself — the deflection, which grows
 # almost in proportion to the load, and the footprint's length, which grows with it — and its
-# split grows faster than the load: the geometric nonlinearity moves the exponent towards the
-# measured range but not into it. What closes the rest is not settled here; the reproduction
-# report compares the cavity's claims on the car's tire.
+# split grows faster than the load, towards the measured range but not into it. What closes the
+# rest is not settled here; the reproduction report compares the cavity's claims on the car's
+# tire.
 
 # %% [markdown]
 # ### The geometric nonlinearity switched off
@@ -293,11 +293,13 @@ print(f"solids about the loaded state:           K_v {static.vertical_stiffness 
 
 
 # %% [markdown]
-# The solids about the round tire give the waveguide's $K_v$ (the sweep into 3-D solids, their
-# ply-by-ply integration and the contact are verified by the other model); about the loaded
-# state the same solids carry the road far more softly. That is the first miss the loaded state
-# was built to explain: the cross-section tire's tangent $K_v$ lies above the target range of
-# this size (section 6), its loaded version's within.
+# The solids about the round tire give the waveguide's $K_v$ on the same section mesh (the sweep
+# into 3-D solids, their ply-by-ply integration and the contact are verified by the other
+# model; the cross-section tire's own file, with its finer section and contact grid, is softer:
+# section 3). About the loaded state the same solids carry the road far more softly, and
+# their tangent $K_v$ at the file's load lies within the target range of this size (section 6),
+# where the cross-section tire's does not; how it moves as the mesh is refined: the book's
+# page on the FE tires (mesh convergence).
 
 # %% [markdown]
 # ## 5. The cleat (Fig. 8-9): the rows along the footprint and the input's sampling
@@ -344,15 +346,17 @@ print(f"paper, Fig. 9 (simulated): {paper_peak:.0f} N")
 
 
 # %% [markdown]
-# The loaded state does not carry the quasi-static peak towards the paper's simulated value: the
-# loaded FE tire's longer footprint spreads its $K_v$ over more rows, and its entry row takes a
-# smaller share of it than the cross-section tire's. What raises the peak on every model is the
-# sampling: taken at the nodes or at the tassello centres, a cleat narrower than a row pushes
-# that row whole, where the shape-function average spreads it over the row's neighbours. The
-# reference page *The FE tire* ("The cleat's input sampling at the paper's element size") shows
-# the ring's nodal sampling on meshes of the paper's footprint elements (some 20-30 mm) reaching
-# the paper's value: its 1200 N is most likely an input-sampling number of its coarser mesh,
-# not a property of the loaded state.
+# The loaded state does not carry the quasi-static peak towards the paper's simulated value:
+# the loaded FE tire is softer on the drum than the cross-section tire and its entry row carries
+# less (the lines above), and the peak follows the entry rows. What raises the peak on every
+# model is the sampling: taken at the nodes or at the tassello centres, a cleat narrower than a
+# row pushes that row whole, where the shape-function average spreads it over the row's
+# neighbours. The reference page *The FE tire* ("The cleat's input sampling at the paper's
+# element size") shows the ring's nodal sampling on meshes of the paper's footprint elements
+# (some 20-30 mm) reaching the paper's value: its 1200 N is consistent with an input-sampling
+# number of its coarser mesh, not with a property of the loaded state. Along the footprint the
+# loaded FE tire's rows are not monotonic (the plot): its cleat force has more than two peaks
+# (the reproduction report, claim `cleat_two_peaks`).
 
 # %% [markdown]
 # ## 6. Paper vs ours: the FE tire's own numbers
@@ -379,13 +383,12 @@ print(side.to_string())
 
 # %% [markdown]
 # The loaded FE tire meets the stiffness, first-resonance, width and tasselli targets. Its
-# footprint is longer than typical for this size because it deflects more under the same load
-# (section 3): its secant stiffness, load over deflection, is the lowest of the three models,
-# softest at light loads (section 4). Its first vertical mode is more damped than the
-# cross-section tire's, with the same compounds and laws: the loaded state lowers the lossless
-# part of its stiffness (the pressure's and the pre-stress's, section 4's switched-off check),
-# so the lossy rubber carries a larger share of the mode's strain energy; the energy shares
-# themselves are not computed here.
+# footprint is longer than the targets and than the ring's at nearly the same deflection
+# (section 3); why its crown stays on the road over a longer arc than a real tire's is not
+# settled here. Its first vertical mode is more damped than the cross-section tire's with the
+# same compounds and laws; the loaded state lowers the stiffness the lossless pressure and
+# pre-stress carry (section 4's switched-off check), which would leave the lossy rubber a larger
+# share of the mode's strain energy, but the shares are not computed here.
 
 # %% [markdown]
 # ## Where each check lives

@@ -1,4 +1,4 @@
-"""The paper's claims, our value for each on both tire models, and the reproduction report.
+"""The paper's claims, our value for each on every tire model, and the reproduction report.
 
 The claims, what the paper says, the tolerance and the notebook live in
 ``data/paper/claims.toml``; :mod:`.evaluators` computes *our* number for each claim on each tire
@@ -44,7 +44,7 @@ def load_claims() -> list[dict]:
 def select_claims(claim_ids: Iterable[str] | None = None) -> list[dict]:
     """The claims with the ids ``claim_ids`` (every claim for ``None``), in the file's order.
 
-    A misspelt id is an error listing the valid ones (it was dropped without a word before);
+    A misspelt id is an error listing the valid ones;
     so is a single string (a list of ids is expected).
     """
     claims = load_claims()
@@ -279,7 +279,7 @@ def write_report(table: pd.DataFrame, folder: Path) -> tuple[Path, Path]:
     csv_path = folder / "reproduction-report.csv"
     md_path = folder / "reproduction-report.md"
     _write_atomically(csv_path, table.to_csv())
-    title = "# Reproduction report: Belluzzo et al. (2002), on both tire models\n\n"
+    title = "# Reproduction report: Belluzzo et al. (2002), on every tire model\n\n"
     _write_atomically(md_path, title + to_markdown(table))
     return csv_path, md_path
 

@@ -4,14 +4,17 @@ The cavity is the cross-section tire's (:mod:`roadnoise_utils.tire.cross_section
 between the inner surface, bead to bead, and the rim, a plane-wave waveguide along the centroid's
 circle of radius :math:`R_c` with Webster's area :math:`A(\\phi) = A_0 + (V'(\\phi) - V'_0)/R_c`,
 :math:`V'` the section's volume per radian. The waveguide tire gets :math:`V'` from its linear
-static amplitudes; here each ring of the solid mesh's nodes gives it exactly, from the nodes'
-loaded positions: the ring's inner-face line in its own half-plane (radius from the axle and
-axial position of each node), closed by the rim's base, and
+static amplitudes; here each ring of the solid mesh's nodes gives it from the nodes' loaded
+positions: the ring's inner-face line drawn in one half-plane (radius from the axle and axial
+position of each node; a loaded ring's nodes leave their half-plane by their small
+circumferential displacements), closed by the rim's base, and
 
 .. math:: V' = \\oint \\tfrac12 r^2\\,n_r\\,dl
 
-by the divergence theorem (three Gauss points on each quadratic line, exact for the round tire's
-quadratic lines as the waveguide's). The ring's section stands at its loaded angle
+by the divergence theorem (three Gauss points on each quadratic line, as the waveguide's).
+:math:`V'_0` is the round, uninflated tire's, so the area includes the inflation's growth, where the
+waveguide tires add the load's change only; the split, from the area's variation round the wheel,
+hardly feels the uniform part. The ring's section stands at its loaded angle
 :math:`\\phi` round the axle (its nodes' mean), so :math:`A(\\phi)` is the Eulerian area the air
 sees at a fixed angle in space, as the waveguide's; interpolated periodically between the rings
 onto equal angles from the footprint centre. Its frequencies come from

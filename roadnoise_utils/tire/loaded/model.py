@@ -70,9 +70,14 @@ class LoadedFEModel(TireModel):
                 "stick = True: the loaded FE tire's contact nodes slide freely (frictionless, held vertically "
                 "only); valid values are None or False"
             )
-        if self.spec.construction.cavity.enabled:
+        if self.cavity_enabled:
             raise NotApplicable(self.kind, "cavity")  # its FRFs do not couple the air: refuse, never ignore it
         return stages.loaded_frfs(self.spec, case, freqs)
+
+    @property
+    def cavity_enabled(self) -> bool:
+        """Whether its construction's file couples the air cavity (``[cavity] enabled``: its FRFs then refuse)."""
+        return bool(self.spec.construction.cavity.enabled)
 
     def air_cavity(self, temperature: float | None = None) -> Cavity:
         """:func:`roadnoise_utils.tire.loaded.cavity.air_cavity`: the construction's cavity, unloaded."""
