@@ -4,7 +4,7 @@ The paper's own kind of FE tire: the construction swept into 3-D solids, mounted
 pressed on the road by large-deformation statics, its dynamics linearised about that loaded
 state. Its stages are cached by :mod:`roadnoise_utils.tire.loaded.stages`; this class answers the pipeline's calls with them.
 It stands on the flat road or a drum (frictionless one-sided contact); its air cavity's section
-round the loaded wheel is computed from the loaded solids (:mod:`.cavity`, the capability
+round the loaded wheel is computed from the loaded solids (:mod:`roadnoise_utils.tire.loaded.cavity`, the capability
 ``cavity_shape``); the one-sided cleat, the modal reduction and the cavity coupled into the FRFs
 are not part of it (:meth:`~roadnoise_utils.tire.model.TireModel.require` says so).
 """
