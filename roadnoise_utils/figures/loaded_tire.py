@@ -24,20 +24,20 @@ def centre_line(tire: LoadedTire, u: np.ndarray) -> tuple[np.ndarray, np.ndarray
 def plot_loaded_side_view(
     tire: LoadedTire, state: StaticState, window: float = 0.2, ax: plt.Axes | None = None
 ) -> plt.Axes:
-    """The tread's centre line near the footprint: round (mounted, unloaded), loaded, and the road,
+    """The tread's centre line at the bottom of the wheel: round (mounted, unloaded), loaded, and the road,
     with a marker at every ring of nodes (the mesh's grading along the wheel); ``window`` (m) either side."""
     if ax is None:
         _, ax = plt.subplots(figsize=(8, 3.5))
     x0, z0 = centre_line(tire, np.zeros(tire.n_dof))
     x, z = centre_line(tire, state.u)
-    near = np.abs(x0) < window
+    near = (np.abs(x0) < window) & (z0 < 0.0)  # the bottom of the wheel, where the road is
     ax.plot(x0[near] * MM, z0[near] * MM, "--", color="0.5", label="round tire (mounted, unloaded)")
     ax.plot(x[near] * MM, z[near] * MM, "o-", ms=3, color="tab:blue", label="loaded (a marker per ring of nodes)")
     ax.axhline(state.road_top * MM, color="k", lw=1.0, label=f"road: {state.road.kind}, {state.road_force:.0f} N")
     ax.set_xlabel("x (mm), direction of travel →")
     ax.set_ylabel("z (mm)")
     ax.set_title(f"the tread's centre line: {state.contact.size} tread nodes held on the road")
-    ax.legend(fontsize=8, loc="upper center")
+    ax.legend(fontsize=8, loc="upper right")
     return ax
 
 
@@ -63,4 +63,28 @@ def plot_against_load(
     ax.set_xlabel("vertical load (kN)")
     ax.set_ylabel(column)
     ax.legend(fontsize=7)
+    return ax
+
+
+def plot_split_against_load(
+    splits: pd.DataFrame, measured: tuple[float, float, str], ax: plt.Axes | None = None
+) -> plt.Axes:
+    """The cavity's split against load per model, log-log, with the measured growth's exponents
+    ``measured`` = (lowest, highest, source) drawn as slopes from the lightest load's smallest split."""
+    ax = plot_against_load(splits, "split (Hz)", ax)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    loads = np.array([splits["load (kN)"].min(), splits["load (kN)"].max()])
+    start = splits.loc[splits["load (kN)"] == loads[0], "split (Hz)"].min()
+    low, high, source = measured
+    for k, style in ((low, ":"), (high, "--")):
+        ax.plot(loads, start * (loads / loads[0]) ** k, style, color="tab:purple", lw=1.1,
+                label=f"measured growth, load^{k:g} ({source})")  # fmt: skip
+    ax.set_xticks(np.unique(splits["load (kN)"]))
+    ax.set_ylim(0.8 * splits["split (Hz)"].min(), 1.6 * splits["split (Hz)"].max())  # the steep slope leaves the frame
+    for axis in (ax.xaxis, ax.yaxis):
+        axis.set_major_formatter(plt.ScalarFormatter())
+        axis.set_minor_formatter(plt.NullFormatter())
+    ax.legend(fontsize=7)
+    ax.set_title("the loaded cavity's first doublet: vertical minus fore-aft frequency")
     return ax
