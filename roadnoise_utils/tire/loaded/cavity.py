@@ -27,6 +27,7 @@ import numpy as np
 
 from ..cavity import Cavity
 from ..cross_section.cavity import section_cavity
+from ..cross_section.spec import CrossSectionSpec
 from ..cross_section.static import build_section_tire
 from ..cross_section.waveguide import surface_points
 from .statics import LoadedTire, StaticState
@@ -35,10 +36,10 @@ from .statics import LoadedTire, StaticState
 N_ANGLES = 720
 
 
-def air_cavity(tire: LoadedTire, temperature: float | None = None) -> Cavity:
+def air_cavity(construction: CrossSectionSpec, temperature: float | None = None) -> Cavity:
     """The unloaded cavity of the construction the solids sweep (its section mesh, the air at its pressure;
-    ``temperature`` in deg C, default the tire file's ``[cavity]``)."""
-    return section_cavity(build_section_tire(tire.spec), temperature).cavity
+    ``temperature`` in deg C, default the tire file's ``[cavity]``): no solid mesh needed."""
+    return section_cavity(build_section_tire(construction), temperature).cavity
 
 
 def ring_volumes(tire: LoadedTire, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -66,7 +67,7 @@ def ring_volumes(tire: LoadedTire, u: np.ndarray) -> tuple[np.ndarray, np.ndarra
 def webster_area(tire: LoadedTire, state: StaticState, cavity: Cavity | None = None) -> np.ndarray:
     """The loaded cavity's Webster area (m^2) at :data:`N_ANGLES` equal angles from the footprint centre:
     :math:`A_0 + (V'(\\phi) - V'_0)/R_c` (module notes), :math:`V'_0` the round tire's."""
-    cavity = air_cavity(tire) if cavity is None else cavity
+    cavity = air_cavity(tire.spec) if cavity is None else cavity
     _, round_volume = ring_volumes(tire, np.zeros(tire.n_dof))
     angle, volume = ring_volumes(tire, state.u)
     phi = 2.0 * np.pi * np.arange(N_ANGLES) / N_ANGLES

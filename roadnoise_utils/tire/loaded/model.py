@@ -81,7 +81,7 @@ class LoadedFEModel(TireModel):
 
     def air_cavity(self, temperature: float | None = None) -> Cavity:
         """:func:`roadnoise_utils.tire.loaded.cavity.air_cavity`: the construction's cavity, unloaded."""
-        return cavity.air_cavity(stages.built_tire(self.spec), temperature)
+        return cavity.air_cavity(self.spec.construction, temperature)
 
     def loaded_cavity_areas(
         self, loads: tuple[float, ...], temperature: float | None = None

@@ -118,7 +118,7 @@ def cavity_areas(
     """The footprints of :func:`load_curve` and the cavity's Webster area round the wheel in each of
     :func:`swept_states` (:func:`.cavity.webster_area`, (n_loads, :data:`.cavity.N_ANGLES`) m^2)."""
     tire = built_tire(spec)
-    air = cavity.air_cavity(tire, temperature)
+    air = cavity.air_cavity(spec.construction, temperature)
     areas = np.array([cavity.webster_area(tire, state, air) for state in swept_states(spec, loads)])
     return load_curve(spec, loads), areas
 
