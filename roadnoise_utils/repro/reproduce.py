@@ -11,7 +11,9 @@
    two cores made notebook 03 run 7-9x slower); a failing notebook stops the run and names its cell;
 2. checks that every plot cell (a top-level ``plt.show()``) produced its figure;
 3. evaluates every claim of ``data/paper/claims.toml`` (:mod:`.claims`), as the pool's last task, beside the
-   overview (both only read the chapters' stages);
+   overview (both only read the chapters' stages); the claims of the models that only the report
+   judges (``overview = false``: the loaded FE tire, whose check tire no chapter loads) have their
+   stages computed by the pool's first task, beside the chapters, not alone at the end;
 4. only then writes, all at once: the figures (``figures/`` or ``--figures``, PNG, named after
    the notebook, the paper figure they mirror — read from the plot cell's heading comment,
    e.g. ``# Fig. 2 analogue: ...`` — and the caption, listed in ``index.csv``) and the report
@@ -57,6 +59,8 @@ INLINE_BACKEND = "module://matplotlib_inline.backend_inline"
 CELL_TIMEOUT = 300
 #: Notebooks executed at a time: two (the machines this runs on have two cores), fewer on one core.
 WORKERS = min(2, os.cpu_count() or 1)
+#: The pool's task that computes the report-only models' stages (:func:`_report_only_stages`).
+_EARLY_STAGES = "report-only stages"
 #: Files of the figures folder that the reproduction writes (anything else in it is kept).
 _OWN = re.compile(r".*\.png|index\.csv|reproduction-report\.(csv|md)")
 
@@ -257,6 +261,22 @@ def _evaluated_claims(one_thread: bool):
         return claims.report(models=claims.MODELS)
 
 
+#: The models only the reproduction's report judges (``overview = false``): no chapter but their own
+#: computes the stages their claims read on their second tire, so those claims start with the pool.
+REPORT_ONLY_MODELS = tuple(m for m in claims.MODELS if m not in claims.OVERVIEW_MODELS)
+
+
+def _report_only_stages(one_thread: bool) -> None:
+    """The stages of :data:`REPORT_ONLY_MODELS`' claims computed into the cache, in a worker of the pool
+    beside the chapters, the last claims first: the claims file ends with those on the check tire
+    (the cavity's, the moving hub's), which no chapter computes for these models, and the
+    chapter of such a model computes its paper tire's stages, read by the first claims; starting from
+    the other end, the two rarely wait for each other's stage (the cache's locks never let them
+    compute one twice). The report is evaluated again, from the cache, once every chapter has ended."""
+    with threadpool_limits(1) if one_thread else contextlib.nullcontext():
+        claims.report(claims=claims.load_claims()[::-1], models=REPORT_ONLY_MODELS)
+
+
 def _execute_all(
     paths: list[Path], timeout: int, workers: int, seconds: dict[Path, float] | None = None, report: bool = False
 ) -> tuple[dict[Path, nbformat.NotebookNode], object]:
@@ -265,9 +285,10 @@ def _execute_all(
     The chapters start longest first by their expected ``seconds`` (in order without them: a
     long notebook started last keeps one core busy alone at the end); the overview (first)
     evaluates every claim: started last, it finds the chapters' stages computed. With
-    ``report`` the claims are evaluated once every chapter has ended, beside the overview (both
-    only read the chapters' stages), not after it. Returns the executed notebooks and the
-    report (or None).
+    ``report`` the stages of the report-only models' claims start first, beside the chapters
+    (:func:`_report_only_stages`), and the claims are evaluated once every chapter and those
+    stages have ended, beside the overview (both only read the cache), not after it. Returns the
+    executed notebooks and the report (or None).
     """
     done, table = {}, None
     started = start_order(paths, seconds or {})
@@ -277,7 +298,11 @@ def _execute_all(
     else:
         executor = ProcessPoolExecutor(max_workers=workers, mp_context=multiprocessing.get_context("spawn"))
     with executor as pool:
-        pending = {pool.submit(_timed_execution, path, timeout, workers > 1): path for path in started}
+        pending: dict = {}
+        if report and REPORT_ONLY_MODELS and started:
+            pending[pool.submit(_report_only_stages, workers > 1)] = _EARLY_STAGES
+            chapters.add(_EARLY_STAGES)  # the report waits for it as for a chapter
+        pending.update({pool.submit(_timed_execution, path, timeout, workers > 1): path for path in started})
         claims_due = report
         if claims_due and not started:  # no notebook: the claims alone
             pending[pool.submit(_evaluated_claims, workers > 1)] = None
@@ -289,6 +314,11 @@ def _execute_all(
                 for future in finished:
                     path = pending.pop(future)
                     progress.update()
+                    if path is _EARLY_STAGES:
+                        future.result()
+                        chapters.discard(_EARLY_STAGES)
+                        tqdm.write(f"the stages of the claims on {', '.join(REPORT_ONLY_MODELS)} computed")
+                        continue
                     if path is None:
                         table = future.result()
                         tqdm.write("the paper's claims evaluated")

@@ -200,6 +200,31 @@ def test_chapters_start_longest_first_and_the_overview_last():
     assert reproduce.start_order(paths, {}) == paths[1:] + paths[:1]
 
 
+def test_the_report_only_models_stages_start_first_and_the_claims_wait_for_them(monkeypatch):
+    """The pool's first task computes the report-only models' stages (their claims, last first); the
+    report is evaluated after it and after every chapter, whichever ends last."""
+    order = []
+    monkeypatch.setattr(reproduce, "REPORT_ONLY_MODELS", ("loaded-fe",))
+    monkeypatch.setattr(reproduce, "_report_only_stages", lambda one_thread: order.append("early stages"))
+    monkeypatch.setattr(reproduce, "_evaluated_claims", lambda one_thread: order.append("claims") or "table")
+    monkeypatch.setattr(
+        reproduce, "_timed_execution", lambda path, timeout, one_thread: order.append(path.name) or ({}, 0.0)
+    )
+    paths = [Path("00.ipynb"), Path("01.ipynb"), Path("02.ipynb")]
+    done, table = reproduce._execute_all(paths, 1, workers=1, report=True)
+    assert order == ["early stages", "01.ipynb", "02.ipynb", "00.ipynb", "claims"] and table == "table"
+    assert list(done) == paths
+    order.clear()
+    reproduce._execute_all(paths, 1, workers=1, report=False)
+    assert order == ["01.ipynb", "02.ipynb", "00.ipynb"]  # no report: nothing of the claims computed
+
+
+def test_the_report_only_models_are_those_notebook_00_does_not_show():
+    from roadnoise_utils.repro import claims
+
+    assert set(reproduce.REPORT_ONLY_MODELS) == set(claims.MODELS) - set(claims.OVERVIEW_MODELS) == {"loaded-fe"}
+
+
 def test_the_collection_gives_every_ready_notebook_its_cold_time():
     ready = [nb for nb in collection.notebooks() if nb["status"] == "ready"]
     assert all(float(nb["cold_seconds"]) > 0 for nb in ready)
