@@ -1,4 +1,4 @@
-"""Figures of notebook 16-loaded-fe-tire: the loaded shape beside the round tire, curves against load."""
+"""Figures of notebook 16-loaded-fe-tire: the loaded shape beside the round tire, curves against load, the modal reduction."""
 
 from __future__ import annotations
 
@@ -7,6 +7,7 @@ import numpy as np
 import pandas as pd
 
 from ..tire.loaded.statics import LoadedTire, StaticState
+from ..tire.model import FRFResult
 from .common import MM
 
 
@@ -88,3 +89,23 @@ def plot_split_against_load(
     ax.legend(fontsize=7)
     ax.set_title("the loaded cavity's first doublet: vertical minus fore-aft frequency")
     return ax
+
+
+def plot_modal_variants(direct: FRFResult, reductions: dict, f_max: float = 250.0) -> plt.Figure:
+    """Fig. 5 analogue: the direct :math:`H_{tot}` (modulus, N/mm, and phase, deg) and each modal reduction's."""
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
+    styles = ["--", ":", "-."]
+    keep = direct.freqs <= f_max
+    top.plot(direct.freqs[keep], np.abs(direct.H_tot[keep]) / 1e3, "k-", label="direct (loaded, linearised)")
+    bottom.plot(direct.freqs[keep], np.degrees(np.angle(direct.H_tot[keep])), "k-")
+    for (label, reduction), style in zip(reductions.items(), styles, strict=False):
+        frf = reduction.frf
+        inside = frf.freqs <= f_max
+        top.plot(frf.freqs[inside], np.abs(frf.H_tot[inside]) / 1e3, style, label=label)
+        bottom.plot(frf.freqs[inside], np.degrees(np.angle(frf.H_tot[inside])), style)
+    top.set_ylabel("|H_tot| (N/mm)")
+    bottom.set_ylabel("phase (deg)")
+    bottom.set_xlabel("Frequency (Hz)")
+    bottom.set_xlim(0, f_max)
+    top.legend(fontsize=8)
+    return fig

@@ -247,6 +247,10 @@ class ModalModel:
     hub_mass : complex
         Mass that moves with the hub and no mode carries (kg): adds :math:`\\omega^2 m` to
         :math:`G_H` (0 for the ring model, whose rim-side mass is outside :math:`G_H`).
+    point_mass : ndarray (n_contact,) complex or None
+        Each contact point's mass coupled to the hub's that no mode carries (kg): adds
+        :math:`\\omega^2 m_n` to its transfer (the loaded FE tire's consistent mass couples its held
+        nodes to the rim; None: the ring's and the cross-section's points carry none).
     """
 
     reference_frequency: float
@@ -260,6 +264,7 @@ class ModalModel:
     anchor_hub: np.ndarray
     membership: np.ndarray
     hub_mass: complex = 0.0
+    point_mass: np.ndarray | None = None
 
     @property
     def freqs(self) -> np.ndarray:
@@ -288,6 +293,8 @@ class ModalModel:
         dyn = 1.0 / (lam - w2) - 1.0 / lam  # (modes, freqs): mode-acceleration form
         coupling = self.point_gain * self.hub_gain[:, None]  # (modes, points)
         points = self._residual(freqs, self.anchor_points).T - coupling.T @ dyn
+        if self.point_mass is not None:
+            points = points + self.point_mass[:, None] * w2
         hub = self._residual(freqs, self.anchor_hub[:, None])[:, 0] + (self.hub_gain**2) @ dyn
         hub = hub + self.hub_mass * w2[0]
         tasselli = self.membership @ points

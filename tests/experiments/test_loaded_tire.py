@@ -126,8 +126,24 @@ def test_the_chapter_runs_alone_on_the_test_mesh(test_mesh_files, tmp_path):
     cells = json.loads(out.read_text())["cells"]
     text = "".join("".join(o.get("text", "")) for c in cells if c["cell_type"] == "code" for o in c.get("outputs", []))
     images = sum("image/png" in o.get("data", {}) for c in cells if c["cell_type"] == "code" for o in c["outputs"])
-    assert images == 5  # the side view, the footprints, the curves against load, the cavity split, the rows
+    assert images == 6  # the side view, the footprints, the curves against load, the cavity split, the rows, Fig. 5
     assert "loaded FE" in text and "a minimum of the potential: True" in text
+    assert "paper: storage moduli, identified damping" in text  # the modal reduction's table
+
+
+def test_modal_variants_are_the_model_s_reductions_and_their_errors_against_the_direct_frfs(small_loaded):
+    reductions, table = loaded_tire.modal_variants(small_loaded)
+    assert list(reductions) == list(loaded_tire.MODAL_VARIANTS) == list(table.index[1:])
+    direct = small_loaded.fixed_hub_frfs(small_loaded.case())
+    low = direct.freqs <= 100.0
+    for label, reduction in reductions.items():
+        miss = np.linalg.norm(reduction.frf.H_tot[low] - direct.H_tot[low]) / np.linalg.norm(direct.H_tot[low])
+        assert table.loc[label, "error 0-100 Hz"] == pytest.approx(miss, rel=1e-12)
+    assert table.loc["complex moduli, the model's own loss", "error 0-100 Hz"] < 0.05
+    peak = table.attrs["peak (Hz)"]
+    assert table.loc["direct", "phase at the peak (deg)"] == pytest.approx(
+        np.degrees(np.angle(direct.H_tot[direct.freqs == peak][0]))
+    )
 
 
 def test_chapter_parameters_are_checked():

@@ -274,6 +274,11 @@ class ReducedFootprint:
         The held tire's modes at rest among the interior coordinates (the first ``n_modes`` of them).
     laws, pneumatic_law
         As :class:`LinearisedTire`.
+    basis : ndarray (n_dof, r) or None
+        The basis itself (``reduce(..., keep_basis=True)``; else None).
+    mode_harmonic : ndarray of int (n_modes,) or None
+        The circumferential wave number of each held mode at rest, where known
+        (:func:`roadnoise_utils.tire.loaded.stages.reduced_footprint`).
     """
 
     compounds: dict
@@ -284,6 +289,8 @@ class ReducedFootprint:
     n_modes: int
     laws: dict
     pneumatic_law: str | None
+    basis: np.ndarray | None = None
+    mode_harmonic: np.ndarray | None = None
 
     def hub_stiffness(self, omega: float) -> np.ndarray:
         """The hub's row of the boundary's condensed dynamic stiffness at ``omega`` (rad/s), (n_boundary,) complex.
@@ -305,7 +312,9 @@ def _ratio(laws: dict, name: str | None, omega: float) -> complex:
     return 1.0 if name is None else complex(laws[name].ratio(np.array([omega]))[0])
 
 
-def reduce(linearised: LinearisedTire, f_max: float, cutoff_factor: float = CUTOFF_FACTOR) -> ReducedFootprint:
+def reduce(
+    linearised: LinearisedTire, f_max: float, cutoff_factor: float = CUTOFF_FACTOR, keep_basis: bool = False
+) -> ReducedFootprint:
     r"""Project the linearised tire on the boundary's static shapes, the held tire's modes and two corrections.
 
     The basis (Craig & Bampton, AIAA J. 6, 1968, enriched for moduli that change with frequency):
@@ -368,6 +377,7 @@ def reduce(linearised: LinearisedTire, f_max: float, cutoff_factor: float = CUTO
         n_modes=modes.shape[1],
         laws=lin.laws,
         pneumatic_law=lin.pneumatic_law,
+        basis=basis if keep_basis else None,
     )
 
 
@@ -397,8 +407,13 @@ def _modes_below(stiffness: sp.spmatrix, mass: sp.spmatrix, factor, omega_cut: f
     inverse = spla.LinearOperator((n, n), matvec=factor.solve, dtype=float)
     below = _count_below(stiffness, mass, omega_cut)
     count = min(24 if below is None else int(1.1 * below) + 4, n - 2)
+    # ARPACK's starting vector, fixed: its default is drawn from a generator that runs on from call to call
+    # in a process, so the basis, and every transfer built on it, differed in their last bits with the
+    # calls a process had made before (which the reproduction's scheduling decides), and the fits'
+    # automatic orders can turn such bits into visible differences
+    start = np.random.default_rng(0).standard_normal(n)
     while True:
-        values, vectors = spla.eigsh(stiffness, count, mass, sigma=0.0, which="LM", OPinv=inverse)
+        values, vectors = spla.eigsh(stiffness, count, mass, sigma=0.0, which="LM", OPinv=inverse, v0=start)
         order = np.argsort(values)
         values, vectors = values[order], vectors[:, order]
         found = int(np.count_nonzero(values < omega_cut**2))

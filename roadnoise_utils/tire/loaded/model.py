@@ -17,6 +17,7 @@ from typing import Any
 
 import numpy as np
 
+from ...response.modal_reduction import ModalReduction
 from ..cavity import Cavity
 from ..model import Footprint, FRFResult, LoadCase, NotApplicable, TireModel, register
 from . import cavity, dynamics, loading, road_contact, stages, statics
@@ -28,7 +29,7 @@ class LoadedFEModel(TireModel):
     """The 3-D FE tire linearised about its nonlinear loaded state (:mod:`roadnoise_utils.tire.loaded`)."""
 
     kind = "loaded-fe"
-    capabilities = frozenset({"fe_mesh", "hub_transfer", "cavity_shape"})
+    capabilities = frozenset({"fe_mesh", "hub_transfer", "modal_reduction", "cavity_shape"})
 
     @classmethod
     def parse(cls, data: dict[str, Any], source: str, path: Path | None = None) -> LoadedSpec:
@@ -73,6 +74,13 @@ class LoadedFEModel(TireModel):
         if self.cavity_enabled:
             raise NotApplicable(self.kind, "cavity")  # its FRFs do not couple the air: refuse, never ignore it
         return stages.loaded_frfs(self.spec, case, freqs)
+
+    def modal_reduction(self, case: LoadCase, **options: Any) -> ModalReduction:
+        """:func:`roadnoise_utils.tire.loaded.stages.loaded_modal` (cached): the loaded modes of its reduced
+        dynamics, the boundary (contact nodes, rim) held."""
+        if self.cavity_enabled:
+            raise NotApplicable(self.kind, "cavity")
+        return stages.loaded_modal(self.spec, case, **options)
 
     @property
     def cavity_enabled(self) -> bool:

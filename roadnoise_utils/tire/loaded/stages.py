@@ -12,6 +12,8 @@ stage                     caches
 :func:`swept_states`      one loading through several loads on the flat road (:func:`.loading.load_sweep`)
 :func:`load_curve`        their footprints
 :func:`round_stiffness`   K_v with the geometric nonlinearity off (:mod:`.linearised`)
+:func:`reduced_footprint` the linearised tire's Craig-Bampton reduction with its held modes' wave numbers
+:func:`loaded_modal`      the paper's modal reduction (Fig. 4) of the loaded tire (:mod:`.modal`)
 ========================  =========================================================================
 
 :func:`built_tire` (the swept mesh and its integration points: about a second) and :func:`cavity_areas`
@@ -20,12 +22,15 @@ stage                     caches
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 
 from ... import guards
 from ...repro.cache import cached
+from ...response.modal_reduction import ModalReduction
 from ..model import DEFAULT_FREQS, Footprint, FRFResult, LoadCase
-from . import cavity, dynamics, footprint, linearised, loading, road_contact, statics
+from . import cavity, dynamics, footprint, linearised, loading, modal, road_contact, statics
 from .mesh import graded_arcs
 from .spec import LoadedSpec
 from .statics import LoadedTire, StaticState
@@ -136,3 +141,43 @@ def round_stiffness(spec: LoadedSpec, load: float) -> float:
         return linearised.flat_road_at_load(compliance, load).stiffness
 
     return cached(round_stiffness, {"tire": spec, "road": "flat", "load": load}, compute, runs=(linearised, statics))
+
+
+def reduced_footprint(spec: LoadedSpec, case: LoadCase, f_max: float) -> dynamics.ReducedFootprint:
+    """Cached: the tire linearised about :func:`loaded_state` and reduced for 0-``f_max`` Hz
+    (:func:`.dynamics.reduce`), its held modes at rest labelled with their wave numbers
+    (:func:`.modal.harmonic_of_modes`); the basis itself is not kept."""
+    f_max = guards.real("f_max", f_max, lo=0.0, lo_open=True, unit="Hz")
+    state = loaded_state(spec, case)
+
+    def compute() -> dynamics.ReducedFootprint:
+        tire = built_tire(spec)
+        reduced = dynamics.reduce(dynamics.linearise(tire, state), f_max, keep_basis=True)
+        held = reduced.basis[:, reduced.n_boundary : reduced.n_boundary + reduced.n_modes]
+        harmonic = modal.harmonic_of_modes(tire.mesh.theta, held)
+        return replace(reduced, basis=None, mode_harmonic=harmonic)
+
+    inputs = {"tire": spec, **case.key(), "f_max": f_max}
+    return cached(reduced_footprint, inputs, compute, runs=(dynamics, modal.harmonic_of_modes, loading, statics))
+
+
+def loaded_modal(
+    spec: LoadedSpec,
+    case: LoadCase,
+    frozen: str = "complex",
+    damping: str = "identified",
+    reference_frequency: float | None = None,
+    f_band: float = 250.0,
+) -> ModalReduction:
+    """Cached :func:`.modal.loaded_modal_reduction` about :func:`loaded_state`, identified on
+    :func:`loaded_frfs` (0-400 Hz) and returning its FRFs at those frequencies."""
+    options = {"frozen": frozen, "damping": damping, "reference_frequency": reference_frequency, "f_band": f_band}
+    visco = loaded_frfs(spec, case)
+    membership = loaded_footprint(spec, case).tasselli.membership()
+    f_top = max(float(modal.ANCHORS[-1]) * float(f_band), float(DEFAULT_FREQS[-1]))
+
+    def compute() -> ModalReduction:
+        return modal.loaded_modal_reduction(reduced_footprint(spec, case, f_top), membership, visco, **options)
+
+    inputs = {"tire": spec, **case.key(), **options}
+    return cached(loaded_modal, inputs, compute, runs=(modal, dynamics, loading, statics))
