@@ -166,8 +166,9 @@ def modal_variants(tire: Tire) -> tuple[dict[str, ModalReduction], pd.DataFrame]
     """The paper's modal reduction of ``tire`` on the flat road at its load, each of :data:`MODAL_VARIANTS`
     (cached stages), and a table per variant: the relative RMS error of its :math:`H_{tot}` against the
     direct one at 0-100 and 150-250 Hz (Fig. 5's bands), its phase at the direct :math:`H_{tot}`'s
-    largest peak below 150 Hz (deg; the direct one's on its own row) and the loss factor it gave the
-    loaded mode nearest the identified one (the frozen mode)."""
+    largest peak below 150 Hz (deg; the direct one's on its own row) and the loss factor of its first
+    mode seen in :math:`H_{tot}` (the lowest whose hub gain passes 1e-3 of the largest: the mode the
+    identified damping goes to, :func:`~roadnoise_utils.response.modal_reduction.apply_identified_damping`)."""
     model = tire_model(tire)
     case = model.case("flat")
     direct = model.fixed_hub_frfs(case)
@@ -180,12 +181,13 @@ def modal_variants(tire: Tire) -> tuple[dict[str, ModalReduction], pd.DataFrame]
     rows = {"direct": {"phase at the peak (deg)": float(np.degrees(np.angle(direct.H_tot[peak])))}}
     for label, reduction in reductions.items():
         errors = band_errors(direct.freqs, direct.H_tot, reduction.frf.H_tot, ((0.0, 100.0), (150.0, 250.0)))
-        frozen_mode = int(np.argmin(np.abs(reduction.model.freqs - reduction.identification.freqs[0])))
+        gain = np.abs(reduction.model.hub_gain)
+        seen = int(np.flatnonzero(gain > 1e-3 * gain.max())[0])
         rows[label] = {
             "error 0-100 Hz": errors["complex rel. RMS"].iloc[0],
             "error 150-250 Hz": errors["complex rel. RMS"].iloc[1],
             "phase at the peak (deg)": float(np.degrees(np.angle(reduction.frf.H_tot[peak]))),
-            "loss factor at the frozen mode": float(reduction.model.loss_factor[frozen_mode]),
+            "loss factor of its first mode seen": float(reduction.model.loss_factor[seen]),
         }
     table = pd.DataFrame(rows).T
     table.attrs["peak (Hz)"] = float(direct.freqs[low][peak])
