@@ -301,7 +301,7 @@ def _execute_all(
         executor = ProcessPoolExecutor(max_workers=workers, mp_context=multiprocessing.get_context("spawn"))
     with executor as pool:
         pending: dict = {}
-        if report and REPORT_ONLY_MODELS and started:
+        if report and REPORT_ONLY_MODELS and len(started) > 1:  # beside chapters; the overview alone: at the end
             pending[pool.submit(_report_only_stages, workers > 1)] = _EARLY_STAGES
             chapters.add(_EARLY_STAGES)  # the report waits for it as for a chapter
         pending.update({pool.submit(_timed_execution, path, timeout, workers > 1): path for path in started})
@@ -333,11 +333,22 @@ def _execute_all(
                     pending[pool.submit(_evaluated_claims, workers > 1)] = None
                     claims_due = False
         except BaseException:
+            _stop_workers(pool)
             pool.shutdown(wait=True, cancel_futures=True)
             raise
         finally:
             progress.close()
     return {path: done[path] for path in paths}, table
+
+
+def _stop_workers(pool) -> None:
+    """End a failed run's process pool now: its workers are terminated, not waited for (a worker may be
+    minutes into a cold chapter or the report-only stages; a stage it leaves unfinished writes nothing,
+    the cache writing each entry whole, and its kernel ends with its parent). A thread pool's one
+    worker cannot be stopped: it ends its task. The workers are the executor's ``_processes`` (no
+    public way to end them before Python 3.14's ``terminate_workers``)."""
+    for process in list((getattr(pool, "_processes", None) or {}).values()):
+        process.terminate()
 
 
 def reproduce(

@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 import nbformat
@@ -217,6 +218,20 @@ def test_the_report_only_models_stages_start_first_and_the_claims_wait_for_them(
     order.clear()
     reproduce._execute_all(paths, 1, workers=1, report=False)
     assert order == ["01.ipynb", "02.ipynb", "00.ipynb"]  # no report: nothing of the claims computed
+
+
+def test_a_failing_notebook_stops_the_run_without_waiting_for_the_report_only_stages(tmp_path, monkeypatch):
+    """Two workers (processes): the first task stands for minutes of stages; a chapter that fails ends the
+    run at once, its workers terminated (measured: a few seconds, against the ten minutes the task sleeps)."""
+    from tests.repro import slow_task
+
+    monkeypatch.setattr(reproduce, "_report_only_stages", slow_task.sleep_long)
+    monkeypatch.setattr(reproduce, "REPORT_ONLY_MODELS", ("loaded-fe",))
+    paths = [_notebook(tmp_path / "00-overview.ipynb", PLOT), _notebook(tmp_path / "01-bad.ipynb", "1 / 0")]
+    start = time.perf_counter()
+    with pytest.raises(reproduce.ReproductionError, match="01-bad.ipynb"):
+        reproduce._execute_all(paths, 60, workers=2, report=True)
+    assert time.perf_counter() - start < 300.0
 
 
 def test_the_report_only_models_are_those_notebook_00_does_not_show():

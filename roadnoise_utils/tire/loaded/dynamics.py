@@ -292,6 +292,13 @@ class ReducedFootprint:
     basis: np.ndarray | None = None
     mode_harmonic: np.ndarray | None = None
 
+    def stiffness(self, omega: float) -> np.ndarray:
+        """:math:`\\sum_c g_c K_c + g_p K_p` and the curvature term at ``omega`` (rad/s), reduced, complex
+        (N/m): the dynamic stiffness without its inertia."""
+        weights = _weights(self.laws, self.pneumatic_law, list(self.compounds), omega)
+        parts = [self.pneumatic, *self.compounds.values(), self.curvature]
+        return sum(w * part for w, part in zip(np.delete(weights, -2), parts))
+
     def hub_stiffness(self, omega: float) -> np.ndarray:
         """The hub's row of the boundary's condensed dynamic stiffness at ``omega`` (rad/s), (n_boundary,) complex.
 

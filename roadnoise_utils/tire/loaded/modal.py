@@ -32,7 +32,7 @@ frequency and every mode kept, the model is the reduced tire's direct solve (the
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 import scipy.linalg as sla
@@ -47,7 +47,7 @@ from ...response.modal_reduction import (
 )
 from ..cross_section.dynamics import frozen_laws
 from ..model import FRFResult
-from .dynamics import ReducedFootprint, _weights
+from .dynamics import ReducedFootprint
 
 #: Loaded modes are kept below ``MODE_FACTOR`` times the band (the other models': accurate to twice the band).
 MODE_FACTOR = 2.0
@@ -87,9 +87,7 @@ class LoadedModes:
 
 def frozen_stiffness(reduced: ReducedFootprint, laws: dict) -> np.ndarray:
     """The reduced stiffness (no inertia) with each compound's ratio from ``laws`` (frozen: any frequency)."""
-    weights = _weights(laws, reduced.pneumatic_law, list(reduced.compounds), 0.0)
-    parts = [reduced.pneumatic, *reduced.compounds.values(), reduced.curvature]
-    return sum(w * part for w, part in zip(np.delete(weights, -2), parts))
+    return replace(reduced, laws=laws).stiffness(0.0)
 
 
 def loaded_modes(reduced: ReducedFootprint, laws: dict, f_keep: float) -> LoadedModes:
@@ -131,10 +129,7 @@ def quasi_static_anchors(reduced: ReducedFootprint, anchor_freqs: np.ndarray) ->
     anchor frequency (Hz): the contact nodes' transfers (n_anchor, P) and :math:`G_H` (n_anchor,)."""
     rows = []
     for f in anchor_freqs:
-        weights = _weights(reduced.laws, reduced.pneumatic_law, list(reduced.compounds), 2 * np.pi * f)
-        weights[-2] = 0.0  # no inertia
-        parts = [reduced.pneumatic, *reduced.compounds.values(), reduced.mass, reduced.curvature]
-        d = sum(w * part for w, part in zip(weights, parts))
+        d = reduced.stiffness(2 * np.pi * f)  # no inertia
         b = reduced.n_boundary
         interior = np.linalg.solve(d[b:, b:], d[b:, b - 1])
         rows.append(-(d[b - 1, :b] - interior @ d[b:, :b]))

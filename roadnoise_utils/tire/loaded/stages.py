@@ -28,7 +28,7 @@ import numpy as np
 
 from ... import guards
 from ...repro.cache import cached
-from ...response.modal_reduction import ModalReduction
+from ...response.modal_reduction import ModalReduction, check_options
 from ..model import DEFAULT_FREQS, Footprint, FRFResult, LoadCase
 from . import cavity, dynamics, footprint, linearised, loading, modal, road_contact, statics
 from .mesh import graded_arcs
@@ -170,7 +170,9 @@ def loaded_modal(
     f_band: float = 250.0,
 ) -> ModalReduction:
     """Cached :func:`.modal.loaded_modal_reduction` about :func:`loaded_state`, identified on
-    :func:`loaded_frfs` (0-400 Hz) and returning its FRFs at those frequencies."""
+    :func:`loaded_frfs` (0-400 Hz) and returning its FRFs at those frequencies; a freezing, damping
+    or band it does not have is refused before any stage runs."""
+    check_options(frozen, damping, f_band)
     options = {"frozen": frozen, "damping": damping, "reference_frequency": reference_frequency, "f_band": f_band}
     visco = loaded_frfs(spec, case)
     membership = loaded_footprint(spec, case).tasselli.membership()

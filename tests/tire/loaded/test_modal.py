@@ -92,3 +92,14 @@ def test_the_wave_number_of_a_pure_harmonic_is_found():
     lateral[..., 1] = np.sin(2 * theta)[:, None]  # n = 2, lateral
     vectors = np.stack([field.ravel(), lateral.ravel()], axis=1)
     assert list(modal.harmonic_of_modes(theta, vectors, top=5)) == [3, 2]
+
+
+@pytest.mark.parametrize(
+    "options, message",
+    [({"frozen": "liquid"}, "frozen = 'liquid'"), ({"frozen": "storage", "damping": "model"}, "damping"),
+     ({"f_band": float("nan")}, "f_band")],
+)  # fmt: skip
+def test_a_bad_option_is_refused_before_any_stage_runs(small_loaded, monkeypatch, options, message):
+    monkeypatch.setattr(stages, "loaded_frfs", lambda *a, **k: pytest.fail("a stage ran before the check"))
+    with pytest.raises(ValueError, match=message):
+        small_loaded.modal_reduction(small_loaded.case(), **options)
