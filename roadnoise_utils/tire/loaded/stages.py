@@ -1,20 +1,21 @@
 """Cached stages of the loaded FE tire (``[tire] model = "loaded-fe"``).
 
-========================  =========================================================================
-stage                     caches
-========================  =========================================================================
-:func:`inflated_state`    mount and inflation (:func:`.statics.inflate`), shared by the load cases
-:func:`loaded_state`      the nonlinear loading to the case's load on its road
-                          (:func:`.loading.load_on_road`)
-:func:`loaded_footprint`  the state as every model's footprint (:func:`.footprint.loaded_footprint`)
-:func:`loaded_frfs`       the dynamics linearised about it, reduced and swept
-                          (:func:`.dynamics.footprint_frf`), on the footprint's tasselli
-:func:`swept_states`      one loading through several loads on the flat road (:func:`.loading.load_sweep`)
-:func:`load_curve`        their footprints
-:func:`round_stiffness`   K_v with the geometric nonlinearity off (:mod:`.linearised`)
-:func:`reduced_footprint` the linearised tire's Craig-Bampton reduction with its held modes' wave numbers
-:func:`loaded_modal`      the paper's modal reduction (Fig. 4) of the loaded tire (:mod:`.modal`)
-========================  =========================================================================
+===========================  ==========================================================================
+stage                        caches
+===========================  ==========================================================================
+:func:`inflated_state`       mount and inflation (:func:`.statics.inflate`), shared by the load cases
+:func:`loaded_state`         the nonlinear loading to the case's load on its road
+                             (:func:`.loading.load_on_road`)
+:func:`loaded_footprint`     the state as every model's footprint (:func:`.footprint.loaded_footprint`)
+:func:`loaded_frfs`          the dynamics linearised about it, reduced and swept
+                             (:func:`.dynamics.footprint_frf`), on the footprint's tasselli
+:func:`swept_states`         one loading through several loads on the flat road
+                             (:func:`.loading.load_sweep`)
+:func:`load_curve`           their footprints
+:func:`round_stiffness`      K_v with the geometric nonlinearity off (:mod:`.linearised`)
+:func:`reduced_footprint`    the linearised tire's Craig-Bampton reduction, its held modes' wave numbers
+:func:`loaded_modal`         the paper's modal reduction (Fig. 4) (:mod:`roadnoise_utils.tire.loaded.modal`)
+===========================  ==========================================================================
 
 :func:`built_tire` (the swept mesh and its integration points: about a second) and :func:`cavity_areas`
 (the loaded cavity's section round the wheel from the swept states: a fraction of a second) are not cached.
