@@ -404,6 +404,39 @@ def check_options(frozen: str, damping: str, f_band: float) -> None:
         raise ValueError(f"f_band = {f_band} Hz: valid range is (0, inf)")
 
 
+#: Quasi-static anchors of the FE tires' residual, as fractions of the band (0 first).
+ANCHORS = (0.0, 0.1, 0.25, 0.5, 1.0, 1.6)
+
+
+def identified_start(
+    visco: FRFResult,
+    frozen: str,
+    damping: str,
+    f_band: float,
+    anchors: tuple[float, ...] = ANCHORS,
+    reference_frequency: float | None = None,
+) -> tuple[ModeIdentification, float, np.ndarray]:
+    """The procedure's first steps on an FE tire's direct FRFs ``visco`` (the cross-section's and the loaded
+    FE tire's): the options checked (:func:`check_options`), the modes identified on :math:`H_{tot}` over
+    0-``f_band`` Hz, the frozen frequency (:func:`reference_mode`) and the anchors in Hz.
+
+    Raises
+    ------
+    TypeError
+        ``visco`` is not an :class:`~roadnoise_utils.tire.model.FRFResult`.
+    ValueError
+        An option the reduction does not have; ``anchors`` not starting at 0 and increasing.
+    """
+    check_options(frozen, damping, f_band)
+    if not isinstance(visco, FRFResult):
+        raise TypeError(f"visco must be an FRFResult (a model's fixed_hub_frfs), got {type(visco).__name__}")
+    anchor_freqs = np.asarray(anchors, float) * f_band
+    if anchor_freqs[0] != 0.0 or np.any(np.diff(anchor_freqs) <= 0):
+        raise ValueError("anchors must start at 0 and increase")
+    ident = identify_modes(visco.freqs, visco.H_tot, f_max=f_band)
+    return ident, reference_mode(ident, reference_frequency), anchor_freqs
+
+
 def reference_mode(ident: ModeIdentification, reference_frequency: float | None = None) -> float:
     """The frozen frequency (Hz): the given one, or the identified mode with the largest static share."""
     if reference_frequency is None:

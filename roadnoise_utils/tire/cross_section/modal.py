@@ -42,12 +42,12 @@ import numpy as np
 import scipy.linalg as sla
 
 from ...response.modal_reduction import (
+    ANCHORS,
     ModalModel,
     ModalReduction,
     apply_identified_damping,
     check_options,
-    identify_modes,
-    reference_mode,
+    identified_start,
 )
 from ..model import FRFResult
 from .dynamics import frozen_laws, parity_bases, tire_mass
@@ -56,8 +56,6 @@ from .static import SectionStaticState, SectionTire
 
 #: Free modes are kept up to ``FREE_FACTOR`` times the highest loaded mode the model must carry.
 FREE_FACTOR = 2.5
-#: Quasi-static anchors of the residual flexibility, as fractions of the band (:func:`section_modal_reduction`).
-ANCHORS = (0.0, 0.1, 0.25, 0.5, 1.0, 1.6)
 
 
 @dataclass(frozen=True, eq=False)
@@ -308,14 +306,9 @@ def section_modal_reduction(
         The tire's :func:`roadnoise_utils.tire.cross_section.reductions.footprint_reductions` for :func:`reduction_band`
         of this band and anchors, if computed before (they do not depend on the loaded state).
     """
-    check_options(frozen, damping, f_band)
-    if not isinstance(visco, FRFResult):
-        raise TypeError(f"visco must be an FRFResult (FootprintFRF.to_frf_result()), got {type(visco).__name__}")
-    anchor_freqs = np.asarray(anchors, float) * f_band
-    if anchor_freqs[0] != 0.0 or np.any(np.diff(anchor_freqs) <= 0):
-        raise ValueError("anchors must start at 0 and increase")
-    ident = identify_modes(visco.freqs, visco.H_tot, f_max=f_band)
-    reference_frequency = reference_mode(ident, reference_frequency)
+    ident, reference_frequency, anchor_freqs = identified_start(
+        visco, frozen, damping, f_band, anchors, reference_frequency
+    )
     even, laws, modes = _synthesis(
         tire, static, reference_frequency, frozen, f_band, float(anchor_freqs[-1]), reductions
     )

@@ -37,22 +37,13 @@ from dataclasses import dataclass, replace
 import numpy as np
 import scipy.linalg as sla
 
-from ...response.modal_reduction import (
-    ModalModel,
-    ModalReduction,
-    apply_identified_damping,
-    check_options,
-    identify_modes,
-    reference_mode,
-)
+from ...response.modal_reduction import ANCHORS, ModalModel, ModalReduction, apply_identified_damping, identified_start
 from ..cross_section.dynamics import frozen_laws
 from ..model import FRFResult
 from .dynamics import ReducedFootprint
 
 #: Loaded modes are kept below ``MODE_FACTOR`` times the band (the other models': accurate to twice the band).
 MODE_FACTOR = 2.0
-#: Quasi-static anchors of the residual, as fractions of the band (those of the other models).
-ANCHORS = (0.0, 0.1, 0.25, 0.5, 1.0, 1.6)
 
 
 @dataclass(frozen=True, eq=False)
@@ -199,14 +190,9 @@ def loaded_modal_reduction(
     reference_frequency, frozen, damping, f_band, anchors
         As the other models' (:func:`roadnoise_utils.tire.cross_section.modal.section_modal_reduction`).
     """
-    check_options(frozen, damping, f_band)
-    if not isinstance(visco, FRFResult):
-        raise TypeError(f"visco must be an FRFResult, got {type(visco).__name__}")
-    anchor_freqs = np.asarray(anchors, float) * f_band
-    if anchor_freqs[0] != 0.0 or np.any(np.diff(anchor_freqs) <= 0):
-        raise ValueError("anchors must start at 0 and increase")
-    ident = identify_modes(visco.freqs, visco.H_tot, f_max=f_band)
-    reference_frequency = reference_mode(ident, reference_frequency)
+    ident, reference_frequency, anchor_freqs = identified_start(
+        visco, frozen, damping, f_band, anchors, reference_frequency
+    )
     model, modes = modal_model(
         reduced,
         membership,
