@@ -391,6 +391,22 @@ def apply_identified_damping(
     return eigenvalues.real * (1 + 1j * eta), source
 
 
+def modal_damping(
+    eigenvalues: np.ndarray,
+    hub_gain: np.ndarray,
+    ident: ModeIdentification | None,
+    frozen: str,
+    damping: str,
+    f_band: float,
+) -> tuple[np.ndarray, np.ndarray]:
+    """The frozen modes' eigenvalues with the damping asked for, and where each mode's came from: the
+    identified loss factors (``damping="identified"``: :func:`apply_identified_damping`) or the frozen
+    model's own (``"model"``; ``ident`` unused)."""
+    if damping == "identified":
+        return apply_identified_damping(eigenvalues, hub_gain, ident, frozen, f_band)
+    return eigenvalues, np.full(eigenvalues.size, "frozen model", dtype=object)
+
+
 def check_options(frozen: str, damping: str, f_band: float) -> None:
     """Refuse a freezing, damping or band the reduction does not have (both tire models)."""
     if frozen not in ("complex", "storage"):

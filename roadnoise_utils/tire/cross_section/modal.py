@@ -45,9 +45,9 @@ from ...response.modal_reduction import (
     ANCHORS,
     ModalModel,
     ModalReduction,
-    apply_identified_damping,
     check_options,
     identified_start,
+    modal_damping,
 )
 from ..model import FRFResult
 from .dynamics import frozen_laws, parity_bases, tire_mass
@@ -312,10 +312,7 @@ def section_modal_reduction(
     even, laws, modes = _synthesis(
         tire, static, reference_frequency, frozen, f_band, float(anchor_freqs[-1]), reductions
     )
-    if damping == "identified":
-        eigenvalues, source = apply_identified_damping(modes.eigenvalues, modes.hub_gain, ident, frozen, f_band)
-    else:
-        eigenvalues, source = modes.eigenvalues, np.full(modes.eigenvalues.size, "frozen model", dtype=object)
+    eigenvalues, source = modal_damping(modes.eigenvalues, modes.hub_gain, ident, frozen, damping, f_band)
     model = _model_of(
         modes, even, even.footprint(anchor_freqs, inertia=False), eigenvalues, source, reference_frequency, frozen
     )

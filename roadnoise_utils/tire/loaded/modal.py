@@ -37,7 +37,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 import scipy.linalg as sla
 
-from ...response.modal_reduction import ANCHORS, ModalModel, ModalReduction, apply_identified_damping, identified_start
+from ...response.modal_reduction import ANCHORS, ModalModel, ModalReduction, identified_start, modal_damping
 from ..cross_section.dynamics import frozen_laws
 from ..model import FRFResult
 from .dynamics import ReducedFootprint
@@ -140,15 +140,12 @@ def modal_model(
 ) -> tuple[ModalModel, LoadedModes]:
     """The reduced tire's :class:`~roadnoise_utils.response.modal_reduction.ModalModel`: modes frozen at
     ``reference_frequency`` (Hz; ``frozen`` complex moduli or their storage part), kept below
-    ``f_keep`` (Hz), the identified damping where ``identification`` is given, and quasi-static anchors."""
+    ``f_keep`` (Hz), the identified damping where ``identification`` is given (else the frozen
+    model's own), and quasi-static anchors."""
     laws = frozen_laws(reduced.laws, 2 * np.pi * reference_frequency, storage_only=frozen == "storage")
     modes = loaded_modes(reduced, laws, f_keep)
-    if identification is None:
-        eigenvalues, source = modes.eigenvalues, np.full(modes.eigenvalues.size, "frozen model", dtype=object)
-    else:
-        eigenvalues, source = apply_identified_damping(
-            modes.eigenvalues, modes.hub_gain, identification, frozen, f_band
-        )
+    damping = "model" if identification is None else "identified"
+    eigenvalues, source = modal_damping(modes.eigenvalues, modes.hub_gain, identification, frozen, damping, f_band)
     anchor_points, anchor_hub = quasi_static_anchors(reduced, anchor_freqs)
     model = ModalModel(
         reference_frequency=float(reference_frequency),

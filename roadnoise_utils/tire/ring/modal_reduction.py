@@ -8,9 +8,9 @@ import scipy.sparse.linalg as spla
 from ...response.modal_reduction import (
     ModalModel,
     ModalReduction,
-    apply_identified_damping,
     check_options,
     identify_modes,
+    modal_damping,
     reference_mode,
 )
 from ..model import FRFResult
@@ -106,10 +106,7 @@ def modal_reduction(
     g_tread = fet.modulus_ratio("tread", omega_ref)
     hub_gain = row @ shapes
     point_gain = ((g_tread.real if storage else g_tread) * (lt.road_input.T @ shapes)).T
-    if damping == "identified":
-        eigenvalues, source = apply_identified_damping(frozen_vals, hub_gain, ident, frozen, f_band)
-    else:
-        eigenvalues, source = frozen_vals, np.full(frozen_vals.size, "frozen model", dtype=object)
+    eigenvalues, source = modal_damping(frozen_vals, hub_gain, ident, frozen, damping, f_band)
     quasi = [solver.solve(2 * np.pi * f, inertia=False) for f in anchor_freqs]
     model = ModalModel(
         reference_frequency=float(reference_frequency),
