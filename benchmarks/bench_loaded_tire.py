@@ -65,7 +65,7 @@ from roadnoise_utils.guards import RoadnoiseWarning
 from roadnoise_utils.tire.cross_section import static as section_static
 from roadnoise_utils.tire.cross_section.checks import harmonic_frequencies
 from roadnoise_utils.tire.cross_section.operators import harmonic_operators
-from roadnoise_utils.tire.loaded import dynamics, footprint, linearised, road_contact, solid, stages, statics
+from roadnoise_utils.tire.loaded import dynamics, footprint, linearised, modal, road_contact, solid, stages, statics
 from roadnoise_utils.tire.loaded.mesh import graded_arcs
 from roadnoise_utils.tire.model import tire_model
 from roadnoise_utils.tire.symmetric_factor import SymmetricFactor
@@ -101,27 +101,6 @@ def compare_linearised(round_tire, inflated, states: list) -> None:
         )
 
 
-def harmonic_of_modes(tire, vectors: np.ndarray, top: int = 10) -> np.ndarray:
-    """The circumferential harmonic carrying most of each mode's displacement (least squares over the rings).
-
-    The displacement is taken in cylindrical components (radial, circumferential, lateral): a
-    harmonic of those is one of the tire, whereas the Cartesian ones mix ``n`` with ``n +- 1``.
-    """
-    theta = tire.mesh.theta
-    basis = np.concatenate(
-        [np.cos(np.outer(theta, np.arange(top + 1))), np.sin(np.outer(theta, np.arange(1, top + 1)))], 1
-    )
-    u = vectors.T.reshape(vectors.shape[1], theta.size, -1, 3)  # (mode, ring, node, xyz)
-    s, c = np.sin(theta)[:, None], np.cos(theta)[:, None]
-    cylindrical = np.stack([u[..., 0] * s - u[..., 2] * c, u[..., 0] * c + u[..., 2] * s, u[..., 1]], -1)
-    harmonics = []
-    for field in cylindrical.reshape(vectors.shape[1], theta.size, -1):
-        coefficients = np.linalg.lstsq(basis, field, rcond=None)[0]
-        energy = (coefficients**2).sum(1)
-        harmonics.append(int(np.argmax(np.concatenate([energy[:1], energy[1 : top + 1] + energy[top + 1 :]]))))
-    return np.array(harmonics)
-
-
 def compare_modes(spec, tire: statics.LoadedTire, label: str, count: int = 40) -> None:
     """The inflated, unloaded modes n = 0..6 of the solids on ``tire``'s mesh beside the waveguide of its section."""
     free = np.setdiff1d(np.arange(tire.n_dof), tire.fixed)
@@ -141,7 +120,7 @@ def compare_modes(spec, tire: statics.LoadedTire, label: str, count: int = 40) -
         full = np.zeros((tire.n_dof, count))
         full[free] = vectors
         order = np.argsort(values)
-        harmonics = harmonic_of_modes(tire, full[:, order])
+        harmonics = modal.harmonic_of_modes(tire.mesh.theta, full[:, order])
         for n in range(7):
             f = np.sqrt(values[order][harmonics == n]) / (2 * np.pi)
             found[name, n] = f if n == 0 else f[::2]  # n > 0: the cos and sin pair
