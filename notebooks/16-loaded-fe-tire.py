@@ -269,6 +269,52 @@ print(f"measured: {exponent_claim['min']:g} to {exponent_claim['max']:g} ({expon
 # tire.
 
 # %% [markdown]
+# ### The air coupled into its FRFs
+#
+# With `[cavity] enabled` in its construction's file, the air of that loaded cavity pushes on
+# the loaded inner surface and on the rim's base, and their motion pumps it: one wall matrix
+# integrated over the loaded solids' faces gives both (reciprocity), and the cavity's Webster
+# modes on the loaded section add a low-rank, frequency-dependent stiffness to the linearised
+# tire (`tire/loaded/cavity.py`; checked against every DOF solved with the air, against the
+# exact volume's derivative, and at rest against the air's compressibility,
+# `tests/tire/loaded/test_cavity.py`). Each model at its file's load on the flat road, around the
+# cavity's first doublet, without and with its air (notebook 14 for the car's ring tire):
+
+# %%
+# NBVAL_IGNORE_OUTPUT
+# Fixed-hub FRFs without and with the air cavity, every model at its file's load, from rest to beyond the doublet
+cavity_band = dataclasses.replace(ru.experiments.cavity.cavity_conditions(loaded_name), band=(0.0, 300.0))
+with_air = {
+    label: ru.experiments.cavity.cavity_frfs(dataclasses.replace(cavity_band, tire=name))
+    for label, name in names.items()
+}
+
+# %%
+# The loaded FE tire's H_tot and G_H without and with its air around the doublet, the loaded doublet marked
+fig = ru.figures.whole_car.plot_cavity_frfs(with_air["loaded FE"])
+fig.axes[0].set_xlim(150.0, 300.0)
+fig.suptitle("the loaded FE tire's fixed-hub FRFs with its air cavity")
+plt.show()
+
+# %%
+# NBVAL_CHECK_OUTPUT
+# Where the air puts its peaks, and what it adds at rest, every model
+for label, result in with_air.items():
+    f_air = result.plain.freqs
+    near = f_air >= 150.0
+    coupled = np.abs(result.with_cavity.H_tot[near])
+    gain = coupled / np.abs(result.plain.H_tot[near])
+    print(f"{label:13s}: loaded doublet {result.loaded_doublet[0]:.0f} / {result.loaded_doublet[1]:.0f} Hz; "
+          f"|H_tot| peaks at {f_air[near][coupled.argmax()]:.0f} Hz, {gain.max():.1f} times the tire's alone; "
+          f"K_v {result.stiffening_at_rest():+.4%} with the air")  # fmt: skip
+
+# %% [markdown]
+# The loaded FE tire's air resonates in its hub force as the other models' does, at its own
+# loaded doublet. At rest the air stiffens it more than the linear models: its volume changes
+# with the deflection through the loaded geometry (the tangent of the exact volume), where a
+# tire linearised about the round state changes its volume only to first order about it.
+
+# %% [markdown]
 # ### The geometric nonlinearity switched off
 #
 # Linearised about the round tire under its linear inflation — exactly what the waveguide

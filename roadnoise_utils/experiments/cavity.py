@@ -108,6 +108,13 @@ class CavityFRFs:
     rigid_torus: float
     loaded_doublet: tuple[float, float]
 
+    def stiffening_at_rest(self) -> float:
+        """How much stiffer the air makes the tire at rest: :math:`K_v` with the cavity over without, less
+        one (-), from :math:`G_H(0)` (the FRFs must start at 0 Hz)."""
+        if self.plain.freqs[0] != 0.0:
+            raise ValueError(f"the FRFs start at {self.plain.freqs[0]:g} Hz: the stiffening at rest needs 0 Hz")
+        return float(self.with_cavity.G_H[0].real / self.plain.G_H[0].real - 1.0)
+
 
 def cavity_frfs(conditions: CavityConditions | None = None, step: float = 1.0) -> CavityFRFs:
     """``H_tot`` and ``G_H`` over the band every ``step`` Hz, without and with the cavity (the tire file's ``[cavity] modes``)."""

@@ -19,17 +19,34 @@ hardly feels the uniform part. The ring's section stands at its loaded angle
 sees at a fixed angle in space, as the waveguide's; interpolated periodically between the rings
 onto equal angles from the footprint centre. Its frequencies come from
 :func:`roadnoise_utils.tire.cavity.webster_modes`, as the other models'.
+
+**Coupled to the tire** (:func:`loaded_coupling`, beyond the paper): a pressure field
+:math:`p(\\phi)` of the waveguide acts on the loaded inner surface, normal to it, and on the
+rim's base. Its work on a small motion ``u`` is :math:`\\int p\\,n\\cdot u\\,dA`, so the wall
+matrix's row of waveguide node ``j`` (:func:`wall_matrix`, m^3/m) is
+:math:`\\int N_j(\\phi(x))\\,N_a\\,n\\,dA` over the inner surface at the loaded positions
+(:math:`N_j` the waveguide's linear elements, :math:`\\phi(x)` a point's angle round the axle from
+the footprint centre, as the areas'), plus the rim's base, which moves with the hub: a vertical
+rim motion ``w`` grows the cavity by :math:`r_b b\\,w\\cos\\phi` per radian (:math:`r_b` the
+rim's radius, ``b`` the beads' axial distance). The same matrix gives, by reciprocity, the
+volume change the motion ``u`` makes at each node, and the modes' volume changes
+:math:`V = G^T \\Phi^T` couple the air to the tire as the ring tire's
+(:class:`roadnoise_utils.tire.cavity.CavityCoupling`). A rigid translation of the whole wheel
+leaves the cavity's volume unchanged (the uniform mode's row), which checks the rim's share
+against the surface's.
 """
 
 from __future__ import annotations
 
 import numpy as np
+import scipy.sparse as sp
 
-from ..cavity import Cavity
+from ..cavity import Cavity, CavityCoupling, webster_modes
 from ..cross_section.cavity import section_cavity
 from ..cross_section.spec import CrossSectionSpec
 from ..cross_section.static import build_section_tire
 from ..cross_section.waveguide import surface_points
+from . import pressure
 from .statics import LoadedTire, StaticState
 
 #: Equal angles round the wheel the Webster area is given at (as the cross-section tire's).
@@ -76,3 +93,58 @@ def webster_area(tire: LoadedTire, state: StaticState, cavity: Cavity | None = N
     if np.any(area <= 0.1 * cavity.area):
         raise ValueError("the tire's deflection closes more than 90 % of the cavity's section: a non-physical load")
     return area
+
+
+def rim_base(tire: LoadedTire) -> tuple[float, float]:
+    """The rim's base closing the cavity: its radius (the construction's rim radius, m) and width (the
+    axial distance between the inner surface's ends at the beads, which the rim holds; m)."""
+    section = tire.mesh.section
+    ends = section.face_lines(0)[[0, -1], [0, -1]]
+    axial = tire.mesh.coordinates[ends, 1]  # the first ring's nodes: every ring's are the same at the beads
+    return float(tire.spec.geometry.rim_radius), float(abs(axial[1] - axial[0]))
+
+
+def wall_matrix(tire: LoadedTire, state: StaticState, n_nodes: int = N_ANGLES) -> sp.csr_matrix:
+    """The volume change (m^3 per m) at each of ``n_nodes`` waveguide nodes (equal angles from the
+    footprint centre) per unit displacement of each DOF, about the loaded ``state`` (module notes):
+    the inner surface's integration points shared between the two nodes either side of their angle
+    (the waveguide's linear elements), the rim's base spread evenly over the rim nodes' vertical DOF
+    (they move together with the hub)."""
+    position, area = pressure.face_points(tire.mesh, tire.surface, state.u)
+    step = 2.0 * np.pi / n_nodes
+    at = np.mod(np.arctan2(position[..., 0], -position[..., 2]), 2.0 * np.pi) / step  # (n_f, q)
+    left = np.floor(at).astype(int)
+    share = at - left
+    nodes = np.stack([left % n_nodes, (left + 1) % n_nodes], axis=-1)  # (n_f, q, 2)
+    hats = np.stack([1.0 - share, share], axis=-1)
+    # face f, point q, side s, node a of the face, component i
+    values = np.einsum("fqs,qa,fqi->fqsai", hats, tire.surface.shape, area)
+    rows = np.broadcast_to(nodes[..., None, None], values.shape)
+    dofs = tire.surface.dofs.reshape(-1, 9, 3)  # (n_f, a, i)
+    cols = np.broadcast_to(dofs[:, None, None, :, :], values.shape)
+    wall = sp.coo_matrix((values.ravel(), (rows.ravel(), cols.ravel())), shape=(n_nodes, tire.n_dof)).tocsr()
+    radius, width = rim_base(tire)
+    hub = 3 * np.unique(tire.fixed // 3) + 2
+    phi = step * np.arange(n_nodes)
+    base = radius * width * np.cos(phi) * step / hub.size  # (n_nodes,) per rim node
+    rim = sp.csr_matrix(
+        (np.repeat(base, hub.size), (np.repeat(np.arange(n_nodes), hub.size), np.tile(hub, n_nodes))),
+        shape=(n_nodes, tire.n_dof),
+    )
+    return (wall + rim).tocsr()
+
+
+def loaded_coupling(tire: LoadedTire, state: StaticState, temperature: float | None = None) -> CavityCoupling:
+    """The air cavity of the loaded ``state`` coupled to the tire's DOF: the tire file's ``[cavity]``
+    modes (``modes``, both parities, the uniform one included) of Webster's equation on
+    :func:`webster_area`, their damping ratio, and :func:`wall_matrix` (``temperature`` in deg C,
+    default the file's)."""
+    settings = tire.spec.cavity
+    air = air_cavity(tire.spec, temperature)
+    area = webster_area(tire, state, air)
+    modes = webster_modes(air, area, settings.modes)
+    wall = wall_matrix(tire, state, area.size)
+    volume = np.asarray(wall.T @ modes.shapes.T)  # (n_dof, modes), in the shapes' normalisation
+    omegas = 2.0 * np.pi * modes.freqs
+    omegas[0] = 0.0  # the uniform pressure
+    return CavityCoupling(volume, omegas, air.density, air.sound_speed, settings.damping_ratio, modes, wall, area)

@@ -23,13 +23,14 @@ give its ``H_i``, all of them ``H_tot``; a unit vertical rim motion with the con
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from ... import guards
+from ..cavity import CavityCoupling
 from ..symmetric_factor import SymmetricFactor
 from . import pressure, road_contact, solid
 from .statics import LoadedTire, StaticState
@@ -94,8 +95,8 @@ class LinearisedTire:
         return _weights(self.laws, self.pneumatic_law, list(self.compounds), omega)
 
     def boundaries(self) -> list[sp.csc_matrix]:
-        """Each part's boundary motions: :func:`_boundary_columns`, the curvature's with the drum's slide."""
-        boundary = _boundary_columns(self)
+        """Each part's boundary motions: :func:`boundary_columns`, the curvature's with the drum's slide."""
+        boundary = boundary_columns(self)
         return [boundary] * (len(self.compounds) + 2) + [(boundary + self.road_slide).tocsc()]
 
     def stiffness(self, omega: float) -> sp.csr_matrix:
@@ -200,33 +201,11 @@ class LoadedFootprintFRF:
         return self.hub.sum(axis=1)
 
 
-def footprint_frf_direct(linearised: LinearisedTire, freqs: np.ndarray) -> LoadedFootprintFRF:
-    r"""The footprint's hub-force transfer by a direct solve of :math:`D(\omega)` at every frequency.
-
-    The reference of the reduced solve: every DOF, no basis. Per frequency, the free DOF follow
-    unit motions of each contact node and of the rim,
-    :math:`u_f = -D_{ff}^{-1} D_{f,b}`, and the force on the hub is minus the rim's vertical
-    reactions, :math:`-\sum_{hub}(D_{h,f} u_f + D_{h,b})`. :math:`D_{ff}`, complex symmetric, is
-    factorised by :class:`~roadnoise_utils.tire.symmetric_factor.SymmetricFactor` (each solve's
-    backward error below 1e-12, else pivoted).
-    """
-    freqs = _check_freqs(freqs)
-    lin = linearised
-    parts, boundaries = lin.parts(), lin.boundaries()
-    free_parts = [part[lin.free][:, lin.free] for part in parts]
-    coupling = [(part[lin.free] @ boundary).toarray() for part, boundary in zip(parts, boundaries)]
-    hub_rows = [(part[lin.hub] @ boundary).toarray().sum(axis=0) for part, boundary in zip(parts, boundaries)]
-    hub_free = [np.asarray(part[lin.hub][:, lin.free].sum(axis=0)).ravel() for part in parts]
-    out = []
-    for frequency in freqs:
-        w = lin.weights(2 * np.pi * frequency)
-        rhs = -sum(wj * c for wj, c in zip(w, coupling))
-        dynamic = sum(wj * m for wj, m in zip(w, free_parts)).tocsc()
-        u_free = SymmetricFactor(dynamic, require_definite=False).solve(rhs)
-        rim = sum(wj * r for wj, r in zip(w, hub_rows)) + sum(wj * h for wj, h in zip(w, hub_free)) @ u_free
-        out.append(-rim)
-    hub = np.array(out)
-    return LoadedFootprintFRF(freqs=freqs, hub=hub[:, :-1], G_H=hub[:, -1])
+def check_wall(lin: LinearisedTire, cavity: CavityCoupling) -> None:
+    """Refuse a cavity wall that reaches a contact node: on a drum those nodes' DOF are turned into the
+    road's frame, the wall's volume changes are not."""
+    if np.any(cavity.volume[np.ravel(lin.road[:, None] - np.arange(3))]):
+        raise ValueError("the cavity's wall reaches a contact node: the inner surface touches the road")
 
 
 def _weights(laws: dict, pneumatic_law: str | None, compounds: list, omega: float) -> np.ndarray:
@@ -238,7 +217,7 @@ def _weights(laws: dict, pneumatic_law: str | None, compounds: list, omega: floa
     )
 
 
-def _check_freqs(freqs: np.ndarray) -> np.ndarray:
+def check_freqs(freqs: np.ndarray) -> np.ndarray:
     """Refuse frequencies that are not finite, strictly ascending and >= 0; warn above 2 kHz."""
     try:
         freqs = np.asarray(freqs, float)
@@ -279,6 +258,9 @@ class ReducedFootprint:
     mode_harmonic : ndarray of int (n_modes,) or None
         The circumferential wave number of each held mode at rest, where known
         (:func:`roadnoise_utils.tire.loaded.stages.reduced_footprint`).
+    cavity : CavityCoupling or None
+        The air cavity coupled to the reduced coordinates (its modes' volume changes projected on
+        the basis, ``volume`` (r, modes); ``wall`` not kept); None: no air.
     """
 
     compounds: dict
@@ -291,6 +273,7 @@ class ReducedFootprint:
     pneumatic_law: str | None
     basis: np.ndarray | None = None
     mode_harmonic: np.ndarray | None = None
+    cavity: CavityCoupling | None = None
 
     def stiffness(self, omega: float) -> np.ndarray:
         """:math:`\\sum_c g_c K_c + g_p K_p` and the curvature term at ``omega`` (rad/s), reduced, complex
@@ -305,11 +288,15 @@ class ReducedFootprint:
         The interior condensed out, :math:`S = D_{bb} - D_{bi} D_{ii}^{-1} D_{ib}`; of ``S`` only the
         hub's row is needed, and ``D`` is complex symmetric, so one solve with the interior block
         gives it:
-        :math:`S_{h,:} = D_{h,b} - (D_{ii}^{-1} D_{i,h})^T D_{ib}`.
+        :math:`S_{h,:} = D_{h,b} - (D_{ii}^{-1} D_{i,h})^T D_{ib}`. With the air cavity ``D`` carries
+        its term :math:`-V C(\\omega) V^T` (:meth:`roadnoise_utils.tire.cavity.CavityCoupling.terms`).
         """
         weights = _weights(self.laws, self.pneumatic_law, list(self.compounds), omega)
         parts = [self.pneumatic, *self.compounds.values(), self.mass, self.curvature]
         d = sum(w * part for w, part in zip(weights, parts))
+        if self.cavity is not None:
+            gains, volume = self.cavity.terms(omega)
+            d = d - self.cavity.volume @ gains @ volume.T
         b = self.n_boundary
         interior = np.linalg.solve(d[b:, b:], d[b:, b - 1])
         return d[b - 1, :b] - interior @ d[b:, :b]
@@ -320,7 +307,11 @@ def _ratio(laws: dict, name: str | None, omega: float) -> complex:
 
 
 def reduce(
-    linearised: LinearisedTire, f_max: float, cutoff_factor: float = CUTOFF_FACTOR, keep_basis: bool = False
+    linearised: LinearisedTire,
+    f_max: float,
+    cutoff_factor: float = CUTOFF_FACTOR,
+    keep_basis: bool = False,
+    cavity: CavityCoupling | None = None,
 ) -> ReducedFootprint:
     r"""Project the linearised tire on the boundary's static shapes, the held tire's modes and two corrections.
 
@@ -339,12 +330,16 @@ def reduce(
     a 12 240-DOF mesh on the drum at 3 kN; at 2.5 times the top, the stiffened tire's own modes in
     place of the change give the same (3.4e-4 and 2.1e-4, against 3.4e-4 and 2.2e-4) from a second
     shift-invert Lanczos run; the modes at rest without their change, 2.4e-3 on the test mesh.
+
+    With the air ``cavity`` (:func:`roadnoise_utils.tire.loaded.cavity.loaded_coupling`) the basis also holds the
+    free DOF's static response to each cavity mode's pressure on the wall, :math:`K_{ff}^{-1} V_f`, and
+    the coupling is projected on it.
     """
     lin = linearised
     f_max = guards.real("f_max", f_max, lo=0.0, lo_open=True, unit="Hz")
     cutoff_factor = guards.real("cutoff_factor", cutoff_factor, lo=1.0, unit="")
     rest = lin.stiffness(0.0).real.tocsr()
-    boundary = _boundary_columns(lin)
+    boundary = boundary_columns(lin)
     slide_load = (lin.curvature[lin.free] @ lin.road_slide).toarray()  # the drum's slide on the curvature term
     mass_ff = lin.mass[lin.free][:, lin.free].tocsc()
     factor = _factor(rest[lin.free][:, lin.free])
@@ -358,9 +353,11 @@ def reduce(
     stiffening = factor.solve((stiff - rest)[lin.free][:, lin.free] @ modes)
     stiff_shapes = -stiff_factor.solve((stiff[lin.free] @ boundary).toarray() + slide_load)
     inertia = -factor.solve(lin.mass[lin.free] @ shapes)
-    interior = _mass_orthonormal(
-        np.hstack([modes, stiffening, stiff_shapes - shapes[lin.free], inertia]), mass_ff, keep=modes.shape[1]
-    )
+    ritz = [modes, stiffening, stiff_shapes - shapes[lin.free], inertia]
+    if cavity is not None:
+        check_wall(lin, cavity)
+        ritz.append(factor.solve(cavity.volume[lin.free]))  # the air's pressures on the wall, at rest
+    interior = _mass_orthonormal(np.hstack(ritz), mass_ff, keep=modes.shape[1])
     n_b = boundary.shape[1]
     basis = np.zeros((lin.mass.shape[0], n_b + interior.shape[1]))
     basis[:, :n_b] = shapes
@@ -385,10 +382,11 @@ def reduce(
         laws=lin.laws,
         pneumatic_law=lin.pneumatic_law,
         basis=basis if keep_basis else None,
+        cavity=None if cavity is None else replace(cavity, volume=basis.T @ cavity.volume, wall=None),
     )
 
 
-def _boundary_columns(lin: LinearisedTire) -> sp.csc_matrix:
+def boundary_columns(lin: LinearisedTire) -> sp.csc_matrix:
     """Unit motions (n_dof, P + 1): the road under each contact node moved up by one (its held DOF by
     the normal's vertical component), then every rim node's vertical DOF together."""
     n_dof, n_road = lin.mass.shape[0], lin.road.size
@@ -456,13 +454,16 @@ def _mass_orthonormal(vectors: np.ndarray, mass: sp.spmatrix, keep: int) -> np.n
 
 
 def footprint_frf(
-    linearised: LinearisedTire, freqs: np.ndarray, reduced: ReducedFootprint | None = None
+    linearised: LinearisedTire,
+    freqs: np.ndarray,
+    reduced: ReducedFootprint | None = None,
+    cavity: CavityCoupling | None = None,
 ) -> LoadedFootprintFRF:
     """The footprint's hub-force transfer on the reduced basis (:func:`reduce`; built here for
-    ``max(freqs)`` unless given): the boundary's condensed dynamic stiffness ``S`` at each frequency,
-    :math:`h_p = -S_{hub,p}`, :math:`G_H = -S_{hub,hub}`."""
-    freqs = _check_freqs(freqs)
+    ``max(freqs)``, with the air ``cavity`` if given, unless ``reduced`` is): the boundary's condensed
+    dynamic stiffness ``S`` at each frequency, :math:`h_p = -S_{hub,p}`, :math:`G_H = -S_{hub,hub}`."""
+    freqs = check_freqs(freqs)
     if reduced is None:
-        reduced = reduce(linearised, max(float(freqs.max()), 1.0))
+        reduced = reduce(linearised, max(float(freqs.max()), 1.0), cavity=cavity)
     hub = np.array([-reduced.hub_stiffness(2 * np.pi * f) for f in freqs])
     return LoadedFootprintFRF(freqs=freqs, hub=hub[:, :-1], G_H=hub[:, -1])

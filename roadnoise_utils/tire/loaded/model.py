@@ -5,8 +5,9 @@ pressed on the road by large-deformation statics, its dynamics linearised about 
 state. Its stages are cached by :mod:`roadnoise_utils.tire.loaded.stages`; this class answers the pipeline's calls with them.
 It stands on the flat road or a drum (frictionless one-sided contact); its air cavity's section
 round the loaded wheel is computed from the loaded solids (:mod:`roadnoise_utils.tire.loaded.cavity`, the capability
-``cavity_shape``); the one-sided cleat, the modal reduction and the cavity coupled into the FRFs
-are not part of it (:meth:`~roadnoise_utils.tire.model.TireModel.require` says so).
+``cavity_shape``), and with ``[cavity] enabled`` in its construction's file the air of that loaded
+cavity is coupled into its FRFs (``cavity``); its modal reduction refuses the air. The one-sided cleat
+is not part of it (:meth:`~roadnoise_utils.tire.model.TireModel.require` says so).
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ import numpy as np
 
 from ...response.modal_reduction import ModalReduction
 from ..cavity import Cavity
-from ..model import Footprint, FRFResult, LoadCase, NotApplicable, TireModel, register
+from ..model import Footprint, FRFResult, LoadCase, TireModel, register
 from . import cavity, dynamics, loading, road_contact, stages, statics
 from .spec import LoadedSpec, from_dict
 
@@ -29,7 +30,7 @@ class LoadedFEModel(TireModel):
     """The 3-D FE tire linearised about its nonlinear loaded state (:mod:`roadnoise_utils.tire.loaded`)."""
 
     kind = "loaded-fe"
-    capabilities = frozenset({"fe_mesh", "hub_transfer", "modal_reduction", "cavity_shape"})
+    capabilities = frozenset({"fe_mesh", "hub_transfer", "modal_reduction", "cavity", "cavity_shape"})
 
     @classmethod
     def parse(cls, data: dict[str, Any], source: str, path: Path | None = None) -> LoadedSpec:
@@ -64,27 +65,29 @@ class LoadedFEModel(TireModel):
     def fixed_hub_frfs(
         self, case: LoadCase, freqs: np.ndarray | None = None, progress: bool = False, stick: bool | None = None
     ) -> FRFResult:
-        """:func:`roadnoise_utils.tire.loaded.stages.loaded_frfs` (cached; default 0-400 Hz every 1 Hz). Its contact nodes are held
-        vertically and slide freely along the road, so ``stick`` must be ``None`` or ``False``."""
+        """:func:`roadnoise_utils.tire.loaded.stages.loaded_frfs` (cached; default 0-400 Hz every 1 Hz; with the air
+        cavity if its file enables it). Its contact nodes are held vertically and slide freely along
+        the road, so ``stick`` must be ``None`` or ``False``."""
         if stick:
             raise ValueError(
                 "stick = True: the loaded FE tire's contact nodes slide freely (frictionless, held vertically "
                 "only); valid values are None or False"
             )
-        if self.cavity_enabled:
-            raise NotApplicable(self.kind, "cavity")  # its FRFs do not couple the air: refuse, never ignore it
         return stages.loaded_frfs(self.spec, case, freqs)
 
     def modal_reduction(self, case: LoadCase, **options: Any) -> ModalReduction:
         """:func:`roadnoise_utils.tire.loaded.stages.loaded_modal` (cached): the loaded modes of its reduced
         dynamics, the boundary (contact nodes, rim) held."""
         if self.cavity_enabled:
-            raise NotApplicable(self.kind, "cavity")
+            raise ValueError(
+                "modal reduction: the loaded modes are the tire's without its air; valid tires have "
+                "[cavity] enabled = false"
+            )
         return stages.loaded_modal(self.spec, case, **options)
 
     @property
     def cavity_enabled(self) -> bool:
-        """Whether its construction's file couples the air cavity (``[cavity] enabled``: its FRFs then refuse)."""
+        """Whether its construction's file couples the air cavity (``[cavity] enabled``)."""
         return bool(self.spec.construction.cavity.enabled)
 
     def air_cavity(self, temperature: float | None = None) -> Cavity:

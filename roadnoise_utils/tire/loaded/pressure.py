@@ -97,6 +97,15 @@ def pressure_load(mesh: SolidMesh, surface: InnerSurface, u: np.ndarray, pressur
     return force
 
 
+def face_points(mesh: SolidMesh, surface: InnerSurface, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The inner surface displaced by ``u`` at its faces' integration points: their positions (n_f, q, 3)
+    and their area vectors out of the cavity times the points' weights (n_f, q, 3; m^2): a pressure
+    field ``p`` puts :math:`\\sum_q p_q N_a(q)\\,a_q` on node ``a`` (:func:`pressure_load` for a uniform one)."""
+    x, x_xi, x_zeta = _tangents(mesh, surface, u)
+    position = np.einsum("qa,fai->fqi", surface.shape, x)
+    return position, np.cross(x_xi, x_zeta) * (surface.sign * surface.weight)[None, :, None]
+
+
 def _skew(v: np.ndarray) -> np.ndarray:
     """``[v]x`` (..., 3, 3): ``[v]x w = v x w``."""
     z = np.zeros(v.shape[:-1])

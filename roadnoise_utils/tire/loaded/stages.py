@@ -8,7 +8,8 @@ stage                        caches
                              (:func:`.loading.load_on_road`)
 :func:`loaded_footprint`     the state as every model's footprint (:func:`.footprint.loaded_footprint`)
 :func:`loaded_frfs`          the dynamics linearised about it, reduced and swept
-                             (:func:`.dynamics.footprint_frf`), on the footprint's tasselli
+                             (:func:`.dynamics.footprint_frf`), on the footprint's tasselli; with
+                             ``[cavity] enabled`` the air coupled (:func:`.cavity.loaded_coupling`)
 :func:`swept_states`         one loading through several loads on the flat road
                              (:func:`.loading.load_sweep`)
 :func:`load_curve`           their footprints
@@ -31,6 +32,7 @@ from ... import guards
 from ...repro.cache import cached
 from ...response.modal_reduction import ModalReduction, check_options
 from ..model import DEFAULT_FREQS, Footprint, FRFResult, LoadCase
+from ..schema import NO_CAVITY
 from . import cavity, dynamics, footprint, linearised, loading, modal, road_contact, statics
 from .mesh import graded_arcs
 from .spec import LoadedSpec
@@ -45,14 +47,24 @@ def built_tire(spec: LoadedSpec) -> LoadedTire:
     return statics.build_loaded_tire(spec.construction, arcs)
 
 
+def without_air(spec: LoadedSpec) -> LoadedSpec:
+    """The tire file as its statics read it: the ``[cavity]`` settings are the air's dynamics (the inflation
+    is the file's operating pressure), so a tire with its air cavity on shares the static states of
+    the same tire without it."""
+    return replace(spec, construction=replace(spec.construction, cavity=NO_CAVITY))
+
+
 def inflated_state(spec: LoadedSpec) -> StaticState:
     """Cached: the tire mounted and inflated to its file's pressure (:func:`.statics.inflate`), shared by
-    every load case of the file (7 s on the production mesh)."""
+    every load case of the file (7 s on the production mesh) and by its ``[cavity]`` settings."""
+    spec = without_air(spec)
     return cached(inflated_state, {"tire": spec}, lambda: statics.inflate(built_tire(spec)), runs=(statics,))
 
 
 def loaded_state(spec: LoadedSpec, case: LoadCase) -> StaticState:
-    """Cached: :func:`inflated_state` loaded on the case's road (flat or drum) to ``case.load`` (N)."""
+    """Cached: :func:`inflated_state` loaded on the case's road (flat or drum) to ``case.load`` (N), whatever
+    the ``[cavity]`` settings (:func:`without_air`)."""
+    spec = without_air(spec)
     inputs = {"tire": spec, **case.key()}
 
     def compute() -> StaticState:
@@ -77,7 +89,8 @@ def loaded_footprint(spec: LoadedSpec, case: LoadCase) -> Footprint:
 def loaded_frfs(spec: LoadedSpec, case: LoadCase, freqs: np.ndarray | None = None) -> FRFResult:
     """Cached fixed-hub FRFs about :func:`loaded_state` at ``freqs`` (Hz; default 0-400 Hz every 1 Hz):
     linearised (:func:`.dynamics.linearise`), reduced for ``max(freqs)`` (:func:`.dynamics.reduce`)
-    and swept, on the tasselli of :func:`loaded_footprint`."""
+    and swept, on the tasselli of :func:`loaded_footprint`; the construction's ``[cavity] enabled``
+    couples the air of the loaded cavity (:func:`.cavity.loaded_coupling`)."""
     freqs = DEFAULT_FREQS if freqs is None else np.asarray(freqs, dtype=float)
     if not np.array_equal(freqs, DEFAULT_FREQS) and np.all(np.isin(freqs, DEFAULT_FREQS)):
         full = loaded_frfs(spec, case)
@@ -86,18 +99,21 @@ def loaded_frfs(spec: LoadedSpec, case: LoadCase, freqs: np.ndarray | None = Non
     tasselli = loaded_footprint(spec, case).tasselli
 
     def compute() -> FRFResult:
-        linearised = dynamics.linearise(built_tire(spec), state)
-        frf = dynamics.footprint_frf(linearised, freqs)
+        tire = built_tire(spec)
+        linearised = dynamics.linearise(tire, state)
+        air = cavity.loaded_coupling(tire, state) if spec.construction.cavity.enabled else None
+        frf = dynamics.footprint_frf(linearised, freqs, cavity=air)
         return footprint.frf_result(frf, tasselli)
 
     inputs = {"tire": spec, **case.key(), "freqs": freqs}
-    return cached(loaded_frfs, inputs, compute, runs=(dynamics, footprint, loading, road_contact, statics))
+    return cached(loaded_frfs, inputs, compute, runs=(cavity, dynamics, footprint, loading, road_contact, statics))
 
 
 def swept_states(spec: LoadedSpec, loads: tuple[float, ...]) -> list[StaticState]:
     """Cached: the tire at each of ``loads`` (N, increasing) on the flat road, one loading from
     :func:`inflated_state` continued from load to load (:func:`.loading.load_sweep`)."""
     loads = tuple(guards.real("loads", load, *guards.LOAD_RANGE, unit="N") for load in loads)
+    spec = without_air(spec)
 
     def compute() -> list[StaticState]:
         return loading.load_sweep(built_tire(spec), inflated_state(spec), list(loads), spec.solid_mesh.road_step)

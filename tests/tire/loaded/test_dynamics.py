@@ -15,6 +15,7 @@ import pytest
 import scipy.sparse as sp
 
 from roadnoise_utils.tire.loaded import dynamics, footprint, road_contact, statics
+from roadnoise_utils.tire.loaded.direct import footprint_frf_direct
 from roadnoise_utils.tire.symmetric_factor import SymmetricFactor
 
 FREQS = np.array([0.0, 100.0, 250.0, 400.0])
@@ -38,7 +39,7 @@ def linearised(tire, loaded):
 
 @pytest.fixture(scope="module")
 def direct(linearised):
-    return dynamics.footprint_frf_direct(linearised, FREQS)
+    return footprint_frf_direct(linearised, FREQS)
 
 
 def test_the_stiffness_parts_sum_to_the_static_tangent(tire, loaded, linearised):
@@ -82,7 +83,7 @@ def test_bad_input_is_refused_naming_it(tire, loaded, linearised):
         dynamics.linearise(tire, dataclasses.replace(loaded, contact=loaded.contact[:0]))
     for freqs in ([], [10.0, 5.0], [-1.0], [np.nan], "abc"):
         with pytest.raises(ValueError, match="freqs"):
-            dynamics.footprint_frf_direct(linearised, freqs)
+            footprint_frf_direct(linearised, freqs)
     with pytest.raises(ValueError, match="f_max"):
         dynamics.reduce(linearised, 0.0)
 

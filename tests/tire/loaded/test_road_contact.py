@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 from roadnoise_utils.tire.loaded import dynamics, loading, road_contact, statics
+from roadnoise_utils.tire.loaded.direct import footprint_frf_direct
 from roadnoise_utils.tire.surface import make_road
 
 DRUM = make_road("drum", 1.25)
@@ -76,7 +77,7 @@ def test_the_drum_tends_to_the_flat_road_like_one_over_its_radius(model_tire, mo
 def drum_direct(model_tire, on_drum):
     """The drum state linearised, and its footprint transfer by the direct solve at 0, 60 and 120 Hz."""
     linearised = dynamics.linearise(model_tire, on_drum)
-    return linearised, dynamics.footprint_frf_direct(linearised, np.array([0.0, 60.0, 120.0]))
+    return linearised, footprint_frf_direct(linearised, np.array([0.0, 60.0, 120.0]))
 
 
 def test_at_rest_the_drum_footprint_s_transfer_is_its_vertical_stiffness(model_tire, on_drum, drum_direct):
