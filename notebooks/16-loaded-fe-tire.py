@@ -310,9 +310,11 @@ for label, result in with_air.items():
 
 # %% [markdown]
 # The loaded FE tire's air resonates in its hub force as the other models' does, at its own
-# loaded doublet. At rest the air stiffens it more than the linear models: its volume changes
+# loaded doublet. At rest the air stiffens it far more than the linear models: its volume changes
 # with the deflection through the loaded geometry (the tangent of the exact volume), where a
-# tire linearised about the round state changes its volume only to first order about it.
+# tire linearised about the round state changes its volume only to first order about it. The
+# air is adiabatic, as everywhere in the dynamics (a slow, isothermal squeeze would stiffen it
+# about 1/1.4 as much).
 
 # %% [markdown]
 # ### The geometric nonlinearity switched off

@@ -31,9 +31,11 @@ rim motion ``w`` grows the cavity by :math:`r_b b\\,w\\cos\\phi` per radian (:ma
 rim's radius, ``b`` the beads' axial distance). The same matrix gives, by reciprocity, the
 volume change the motion ``u`` makes at each node, and the modes' volume changes
 :math:`V = G^T \\Phi^T` couple the air to the tire as the ring tire's
-(:class:`roadnoise_utils.tire.cavity.CavityCoupling`). A rigid translation of the whole wheel
-leaves the cavity's volume unchanged (the uniform mode's row), which checks the rim's share
-against the surface's.
+(:class:`roadnoise_utils.tire.cavity.CavityCoupling`). A rigid vertical translation of the whole
+wheel leaves the cavity's volume unchanged (the surface's and the rim's shares each vanish); seen
+from the fixed angles it shifts the section, by :math:`-(A\\cos\\phi + A'\\sin\\phi)` per radian
+(the divergence theorem), and the first even mode's share of that shift weighs the rim's term
+against the surface's (tested: without the rim it would be 2.5 times off on the test mesh).
 """
 
 from __future__ import annotations

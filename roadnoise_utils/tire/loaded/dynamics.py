@@ -202,8 +202,11 @@ class LoadedFootprintFRF:
 
 
 def check_wall(lin: LinearisedTire, cavity: CavityCoupling) -> None:
-    """Refuse a cavity wall that reaches a contact node: on a drum those nodes' DOF are turned into the
-    road's frame, the wall's volume changes are not."""
+    """Refuse a cavity wall that reaches a contact node (on a drum those nodes' DOF are turned into the
+    road's frame, the wall's volume changes are not) and air that streams (the loaded tire's air is
+    at rest: its solves use the modes' gains at rest alone)."""
+    if cavity.flow is not None:
+        raise ValueError("cavity.flow: the loaded FE tire's air is at rest; valid couplings have flow = None")
     if np.any(cavity.volume[np.ravel(lin.road[:, None] - np.arange(3))]):
         raise ValueError("the cavity's wall reaches a contact node: the inner surface touches the road")
 

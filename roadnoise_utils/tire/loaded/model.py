@@ -77,12 +77,7 @@ class LoadedFEModel(TireModel):
 
     def modal_reduction(self, case: LoadCase, **options: Any) -> ModalReduction:
         """:func:`roadnoise_utils.tire.loaded.stages.loaded_modal` (cached): the loaded modes of its reduced
-        dynamics, the boundary (contact nodes, rim) held."""
-        if self.cavity_enabled:
-            raise ValueError(
-                "modal reduction: the loaded modes are the tire's without its air; valid tires have "
-                "[cavity] enabled = false"
-            )
+        dynamics, the boundary (contact nodes, rim) held; refused with its air coupled."""
         return stages.loaded_modal(self.spec, case, **options)
 
     @property

@@ -75,7 +75,9 @@ def loaded_state(spec: LoadedSpec, case: LoadCase) -> StaticState:
 
 
 def loaded_footprint(spec: LoadedSpec, case: LoadCase) -> Footprint:
-    """Cached :func:`.footprint.loaded_footprint` of :func:`loaded_state` (the tangent K_v's solve included)."""
+    """Cached :func:`.footprint.loaded_footprint` of :func:`loaded_state` (the tangent K_v's solve included),
+    whatever the ``[cavity]`` settings (:func:`without_air`)."""
+    spec = without_air(spec)
     state = loaded_state(spec, case)
     inputs = {"tire": spec, **case.key()}
     return cached(
@@ -123,7 +125,9 @@ def swept_states(spec: LoadedSpec, loads: tuple[float, ...]) -> list[StaticState
 
 
 def load_curve(spec: LoadedSpec, loads: tuple[float, ...]) -> list[Footprint]:
-    """Cached: the footprint (its tangent K_v included) of each of :func:`swept_states`."""
+    """Cached: the footprint (its tangent K_v included) of each of :func:`swept_states`, whatever the
+    ``[cavity]`` settings."""
+    spec = without_air(spec)
     states = swept_states(spec, loads)
 
     def compute() -> list[Footprint]:
@@ -150,6 +154,7 @@ def round_stiffness(spec: LoadedSpec, load: float) -> float:
     solids linearised about the round tire under its linear inflation as the waveguide tire is
     (:func:`.linearised.round_linearisation`), the one-sided contact solved on that linear tire."""
     load = guards.real("load", load, *guards.LOAD_RANGE, unit="N")
+    spec = without_air(spec)
 
     def compute() -> float:
         tire = built_tire(spec)
@@ -163,8 +168,10 @@ def round_stiffness(spec: LoadedSpec, load: float) -> float:
 def reduced_footprint(spec: LoadedSpec, case: LoadCase, f_max: float) -> dynamics.ReducedFootprint:
     """Cached: the tire linearised about :func:`loaded_state` and reduced for 0-``f_max`` Hz
     (:func:`.dynamics.reduce`), its held modes at rest labelled with their wave numbers
-    (:func:`.modal.harmonic_of_modes`); the basis itself is not kept."""
+    (:func:`.modal.harmonic_of_modes`); the basis itself is not kept. The tire without its air
+    (:func:`without_air`): the paper's modal reduction reduces the tire alone."""
     f_max = guards.real("f_max", f_max, lo=0.0, lo_open=True, unit="Hz")
+    spec = without_air(spec)
     state = loaded_state(spec, case)
 
     def compute() -> dynamics.ReducedFootprint:
@@ -188,7 +195,13 @@ def loaded_modal(
 ) -> ModalReduction:
     """Cached :func:`.modal.loaded_modal_reduction` about :func:`loaded_state`, identified on
     :func:`loaded_frfs` (0-400 Hz) and returning its FRFs at those frequencies; a freezing, damping
-    or band it does not have is refused before any stage runs."""
+    or band it does not have is refused before any stage runs, and so is a tire whose file couples
+    its air (its loaded modes are the tire's without it)."""
+    if spec.construction.cavity.enabled:
+        raise ValueError(
+            "modal reduction: the loaded modes are the tire's without its air; valid tires have "
+            "[cavity] enabled = false"
+        )
     check_options(frozen, damping, f_band)
     options = {"frozen": frozen, "damping": damping, "reference_frequency": reference_frequency, "f_band": f_band}
     visco = loaded_frfs(spec, case)

@@ -10,12 +10,14 @@ footprint takes area from the cavity under it, the first doublet splits, and mor
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 import scipy.sparse.linalg as spla
 
 from roadnoise_utils.repro.cache import cache_key
-from roadnoise_utils.tire.cavity import webster_modes
+from roadnoise_utils.tire.cavity import RollingFlow, webster_modes
 from roadnoise_utils.tire.cross_section.cavity import section_area
 from roadnoise_utils.tire.cross_section.static import build_section_tire
 from roadnoise_utils.tire.loaded import cavity, dynamics, pressure, stages, statics
@@ -107,15 +109,17 @@ def test_the_wall_is_the_derivative_of_the_cavity_s_volume(model_tire, model_sta
 
 def test_a_rigid_translation_keeps_the_volume_and_moves_the_air_as_the_area_says(model_tire, coupling):
     """A vertical translation of the whole wheel (every node, the rim's base with it) leaves the cavity's
-    volume unchanged: the uniform mode feels nothing, the rim's share cancels the surface's. Seen from
-    the fixed angles it shifts the section: by the divergence theorem the volume change per radian is
-    :math:`-(A\\cos\\phi + A'\\sin\\phi)`, so the first even mode's value is the area's projection
-    (within 2 %: the test mesh's 45-degree arcs sample the surface at 24 angles; measured 0.8 %)."""
+    volume unchanged: the uniform mode feels nothing (the surface's and the rim's shares each vanish
+    over the circle). Seen from the fixed angles it shifts the section: by the divergence theorem the
+    volume change per radian is :math:`-(A\\cos\\phi + A'\\sin\\phi)`, so the first even mode's value
+    is the area's projection (within 2 %: the test mesh's 45-degree arcs sample the surface at 24
+    angles; measured 0.8 %). That weighs the rim's share against the surface's: without the rim the
+    value would be 2.5 times the projection, with its sign turned 4 times."""
     translation = np.zeros(model_tire.n_dof)
     translation[2::3] = 1.0
     modal = coupling.volume.T @ translation
     scale = np.abs(coupling.volume).sum(axis=0)
-    assert abs(modal[0]) < 1e-12 * scale[0]
+    assert abs(modal[0]) < 1e-12 * scale[0]  # the volume, unchanged
     step = 2.0 * np.pi / coupling.area.size
     phi = step * np.arange(coupling.area.size)
     area = coupling.area
@@ -137,6 +141,16 @@ def test_reduced_coupled_frfs_equal_the_direct_coupled_solve(linearised, couplin
     scale = np.abs(direct.hub).max(axis=1)
     assert np.all(np.abs(reduced.hub - direct.hub).max(axis=1) < 1e-3 * scale)
     assert np.all(np.abs(reduced.G_H - direct.G_H) < 1e-3 * np.abs(direct.G_H))
+
+
+def test_streaming_air_is_refused_by_name(linearised, coupling):
+    """The loaded tire's solves use the modes' gains at rest: a coupling whose air streams is refused."""
+    modes = coupling.omegas.size
+    flow = RollingFlow(1.0, np.zeros((modes, modes)), np.zeros_like(coupling.volume), np.zeros_like(coupling.volume))
+    streaming = replace(coupling, flow=flow)
+    for solve in (footprint_frf_direct, dynamics.footprint_frf):
+        with pytest.raises(ValueError, match="cavity.flow: the loaded FE tire's air is at rest"):
+            solve(linearised, np.array([10.0]), cavity=streaming)
 
 
 def test_at_rest_the_air_stiffens_the_tire_by_its_compressibility(model_tire, model_state, linearised, coupling):
