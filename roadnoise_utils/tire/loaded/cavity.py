@@ -102,8 +102,7 @@ def rim_base(tire: LoadedTire) -> tuple[float, float]:
     axial distance between the inner surface's ends at the beads, which the rim holds; m)."""
     section = tire.mesh.section
     ends = section.face_lines(0)[[0, -1], [0, -1]]
-    axial = tire.mesh.coordinates[ends, 1]  # the first ring's nodes: every ring's are the same at the beads
-    return float(tire.spec.geometry.rim_radius), float(abs(axial[1] - axial[0]))
+    return float(tire.spec.geometry.rim_radius), float(abs(section.y[ends[1]] - section.y[ends[0]]))
 
 
 def wall_matrix(tire: LoadedTire, state: StaticState, n_nodes: int = N_ANGLES) -> sp.csr_matrix:
@@ -126,7 +125,7 @@ def wall_matrix(tire: LoadedTire, state: StaticState, n_nodes: int = N_ANGLES) -
     cols = np.broadcast_to(dofs[:, None, None, :, :], values.shape)
     wall = sp.coo_matrix((values.ravel(), (rows.ravel(), cols.ravel())), shape=(n_nodes, tire.n_dof)).tocsr()
     radius, width = rim_base(tire)
-    hub = 3 * np.unique(tire.fixed // 3) + 2
+    hub = tire.rim_vertical
     phi = step * np.arange(n_nodes)
     base = radius * width * np.cos(phi) * step / hub.size  # (n_nodes,) per rim node
     rim = sp.csr_matrix(

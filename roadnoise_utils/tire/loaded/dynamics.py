@@ -159,7 +159,6 @@ def linearise(tire: LoadedTire, state: StaticState) -> LinearisedTire:
         force = (frame.T @ state.reactions)[road]
         curvature = sp.csr_matrix((-force / state.road.drum_radius, (road - 2, road - 2)), shape=(n_dof, n_dof))
         slide = sp.csc_matrix((normals[:, 0], (road - 2, np.arange(n_road))), shape=(n_dof, n_road + 1))
-    rim_nodes = np.unique(tire.fixed // 3)
     return LinearisedTire(
         compounds=compounds,
         pneumatic=pneumatic,
@@ -168,7 +167,7 @@ def linearise(tire: LoadedTire, state: StaticState) -> LinearisedTire:
         pneumatic_law=spec.pneumatic,
         road=road,
         road_vertical=normals[:, 1].copy(),
-        hub=3 * rim_nodes + 2,
+        hub=tire.rim_vertical,
         free=np.setdiff1d(np.arange(n_dof), np.concatenate([tire.fixed, road])),
         state=state,
         curvature=curvature,

@@ -107,7 +107,8 @@ def loaded_frfs(spec: LoadedSpec, case: LoadCase, freqs: np.ndarray | None = Non
         frf = dynamics.footprint_frf(linearised, freqs, cavity=air)
         return footprint.frf_result(frf, tasselli)
 
-    inputs = {"tire": spec, **case.key(), "freqs": freqs}
+    # without the air, its settings change nothing: one cached sweep for every [cavity] setting
+    inputs = {"tire": spec if spec.construction.cavity.enabled else without_air(spec), **case.key(), "freqs": freqs}
     return cached(loaded_frfs, inputs, compute, runs=(cavity, dynamics, footprint, loading, road_contact, statics))
 
 

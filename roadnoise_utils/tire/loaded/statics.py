@@ -88,6 +88,11 @@ class LoadedTire:
     def n_dof(self) -> int:
         return self.mesh.n_dof
 
+    @property
+    def rim_vertical(self) -> np.ndarray:
+        """The vertical DOF of the rim's nodes (the beads held on the rim): they move with the hub, as one."""
+        return 3 * np.unique(self.fixed // 3) + 2
+
 
 def build_loaded_tire(spec: CrossSectionSpec, arcs: np.ndarray) -> LoadedTire:
     """Sweep the tire file's cross-section (its own mesh settings) through ``arcs`` (rad, see :func:`.mesh.graded_arcs`)."""
