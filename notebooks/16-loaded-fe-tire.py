@@ -300,12 +300,9 @@ plt.show()
 # NBVAL_CHECK_OUTPUT
 # Where the air puts its peaks, and what it adds at rest, every model
 for label, result in with_air.items():
-    f_air = result.plain.freqs
-    near = f_air >= 150.0
-    coupled = np.abs(result.with_cavity.H_tot[near])
-    gain = coupled / np.abs(result.plain.H_tot[near])
+    f_peak, gain = result.resonance(above=150.0)
     print(f"{label:13s}: loaded doublet {result.loaded_doublet[0]:.0f} / {result.loaded_doublet[1]:.0f} Hz; "
-          f"|H_tot| peaks at {f_air[near][coupled.argmax()]:.0f} Hz, {gain.max():.1f} times the tire's alone; "
+          f"|H_tot| peaks at {f_peak:.0f} Hz, {gain:.1f} times the tire's alone; "
           f"K_v {result.stiffening_at_rest():+.4%} with the air")  # fmt: skip
 
 # %% [markdown]

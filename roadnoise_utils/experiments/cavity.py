@@ -108,6 +108,18 @@ class CavityFRFs:
     rigid_torus: float
     loaded_doublet: tuple[float, float]
 
+    def resonance(self, above: float = 0.0) -> tuple[float, float]:
+        """Where :math:`|H_{tot}|` with the cavity peaks above ``above`` Hz (Hz), and its largest ratio to
+        the tire's alone there (-)."""
+        near = self.plain.freqs >= above
+        if not near.any():
+            raise ValueError(
+                f"above = {above:g} Hz: valid values are below the FRFs' last, {self.plain.freqs[-1]:g} Hz"
+            )
+        coupled = np.abs(self.with_cavity.H_tot[near])
+        gain = coupled / np.abs(self.plain.H_tot[near])
+        return float(self.plain.freqs[near][coupled.argmax()]), float(gain.max())
+
     def stiffening_at_rest(self) -> float:
         """How much stiffer the air makes the tire at rest: :math:`K_v` with the cavity over without, less
         one (-), from :math:`G_H(0)` (the FRFs must start at 0 Hz)."""

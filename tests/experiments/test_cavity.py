@@ -7,7 +7,7 @@ import pytest
 
 from roadnoise_utils.experiments import cavity
 from roadnoise_utils.repro import stages
-from roadnoise_utils.tire.model import NotApplicable
+from roadnoise_utils.tire.model import FRFResult, NotApplicable
 from roadnoise_utils.tire.ring.spec import from_dict, to_dict
 
 TIRE = "195_65R15"
@@ -73,3 +73,25 @@ def test_the_rolling_doublet_on_both_tire_models():
         assert np.allclose(table["separation (Hz)"], table["closed form (Hz)"], rtol=0.01)
     with pytest.raises(NotApplicable, match="not applicable: rolling_cavity"):
         cavity.rolling_frfs(conditions)
+
+
+def _frfs(freqs, plain_h, coupled_h, plain_g, coupled_g):
+    def result(h, g):
+        return FRFResult(freqs=freqs, H=h[None, :], H_tot=h, G_H=g, H_points=None, method="made up")
+
+    return cavity.CavityFRFs(result(plain_h, plain_g), result(coupled_h, coupled_g), 230.0, (235.0, 250.0))
+
+
+def test_the_resonance_and_the_stiffening_at_rest_are_read_from_both_sweeps():
+    freqs = np.array([0.0, 100.0, 200.0, 250.0, 300.0])
+    plain = np.array([200.0, 300.0, 100.0, 250.0, 400.0]) + 0j
+    coupled = np.array([206.0, 290.0, 150.0, 2000.0, 500.0]) + 0j
+    frfs = _frfs(freqs, plain, coupled, -plain, -coupled)
+    assert frfs.resonance() == (250.0, 8.0)
+    assert frfs.resonance(above=260.0) == (300.0, 1.25)  # only what lies above
+    assert frfs.stiffening_at_rest() == pytest.approx(0.03)  # G_H(0): -206 over -200
+    with pytest.raises(ValueError, match="above = 400 Hz: valid values are below the FRFs' last, 300 Hz"):
+        frfs.resonance(above=400.0)
+    late = _frfs(freqs[1:], plain[1:], coupled[1:], -plain[1:], -coupled[1:])
+    with pytest.raises(ValueError, match="start at 100 Hz: the stiffening at rest needs 0 Hz"):
+        late.stiffening_at_rest()
