@@ -70,6 +70,15 @@ class AirCavity:
         integer=True,
     )
 
+    def refuse_in(self, stage: str) -> None:
+        """Refuse the cavity, switched on, in a stage whose FE numerics do not carry it (a ValueError naming
+        ``stage``): a stage never ignores the air it was asked for."""
+        if self.enabled:
+            raise ValueError(
+                f"{stage}: the FE numerics of this stage do not include the air cavity yet; valid tires have "
+                "[cavity] enabled = false (the cavity reaches the fixed-hub FRFs, the fits and the RM chain)"
+            )
+
 
 #: The cavity of a tire file without a ``[cavity]`` table: off (the paper's model).
 NO_CAVITY = AirCavity(enabled=False, temperature=20.0, damping_ratio=0.01, modes=41)

@@ -63,15 +63,6 @@ def section_tire(tire: SectionTireLike) -> SectionTire:
     return build_section_tire(load_section_tire(tire))
 
 
-def _no_cavity(tire: SectionTireLike, stage: str) -> None:
-    """Refuse a cross-section tire with ``[cavity] enabled = true`` in a stage that does not couple it yet."""
-    if load_section_tire(tire).cavity.enabled:
-        raise ValueError(
-            f"{stage}: this stage's numerics do not include the air cavity yet (the footprint FRFs, the fits "
-            "and the RM chain do); valid tires have [cavity] enabled = false"
-        )
-
-
 def nominal_case(tire: SectionTireLike, road: str = "flat", drum_radius: float | None = None) -> LoadCase:
     """The load case of the tire file's nominal load on a road (``drum_radius`` in m for a drum)."""
     return LoadCase.of(road, load_section_tire(tire).operating.vertical_load, drum_radius)
@@ -149,7 +140,7 @@ def section_modal(
     f_band: float = 250.0,
 ) -> ModalReduction:
     """Cached :func:`roadnoise_utils.tire.cross_section.modal.section_modal_reduction` on the default direct sweep."""
-    _no_cavity(tire, "section_modal")
+    load_section_tire(tire).cavity.refuse_in("section_modal")
     inputs = _inputs(tire, case)
     options = {"frozen": frozen, "damping": damping, "reference_frequency": reference_frequency, "f_band": f_band}
     state = section_static(tire, case)
@@ -224,7 +215,7 @@ def _cleat(height: float, base: float, shape: str, distance: tuple[float, float]
 
 def harmonic_reductions(tire: SectionTireLike, f_max: float = 400.0) -> list:
     """Cached :func:`roadnoise_utils.tire.cross_section.stepping.reduce_all`: every harmonic's Ritz basis for the time-stepped runs."""
-    _no_cavity(tire, "harmonic_reductions")
+    load_section_tire(tire).cavity.refuse_in("harmonic_reductions")
     inputs = {"tire": load_section_tire(tire), "f_max": float(f_max)}
 
     def compute() -> list:

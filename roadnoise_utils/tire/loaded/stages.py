@@ -198,11 +198,7 @@ def loaded_modal(
     :func:`loaded_frfs` (0-400 Hz) and returning its FRFs at those frequencies; a freezing, damping
     or band it does not have is refused before any stage runs, and so is a tire whose file couples
     its air (its loaded modes are the tire's without it)."""
-    if spec.construction.cavity.enabled:
-        raise ValueError(
-            "modal reduction: the loaded modes are the tire's without its air; valid tires have "
-            "[cavity] enabled = false"
-        )
+    spec.construction.cavity.refuse_in("loaded_modal")
     check_options(frozen, damping, f_band)
     options = {"frozen": frozen, "damping": damping, "reference_frequency": reference_frequency, "f_band": f_band}
     visco = loaded_frfs(spec, case)

@@ -77,14 +77,6 @@ class RingModel(TireModel):
     def _inputs(self, case: LoadCase) -> dict:
         return {"tire": self.fingerprint(), **case.key()}
 
-    def _no_cavity(self, stage: str) -> None:
-        """Refuse a cavity-coupled tire in a stage whose FE numerics do not carry the cavity yet."""
-        if self.cavity_enabled:
-            raise ValueError(
-                f"{stage}: the FE numerics of this stage do not include the air cavity yet; valid tires have "
-                "[cavity] enabled = false (the cavity reaches the direct FRFs, the fits and the RM chain)"
-            )
-
     def load(self, case: LoadCase) -> StaticState:
         """:func:`roadnoise_utils.tire.ring.static.solve_static` on ``case`` (cached as ``solve_static``)."""
 
@@ -163,7 +155,7 @@ class RingModel(TireModel):
 
     def loaded_modes(self, case: LoadCase, n_modes: int = 60, reference_frequency: float = 70.0) -> LoadedModes:
         """Cached :func:`roadnoise_utils.tire.ring.modes.loaded_modes` (without the cavity)."""
-        self._no_cavity("loaded_modes")
+        self.spec.cavity.refuse_in("loaded_modes")
         options = {"n_modes": int(n_modes), "reference_frequency": float(reference_frequency)}
         state = self.load(case)
 
@@ -180,7 +172,7 @@ class RingModel(TireModel):
 
     def modal_reduction(self, case: LoadCase, **options: Any) -> ModalReduction:
         """Cached :func:`roadnoise_utils.tire.ring.modal_reduction.modal_reduction` on the default direct sweep."""
-        self._no_cavity("modal_reduction")
+        self.spec.cavity.refuse_in("modal_reduction")
         state = self.load(case)
         visco = self.fixed_hub_frfs(case, DEFAULT_FREQS)
 
@@ -198,7 +190,7 @@ class RingModel(TireModel):
     def direct_cleat_response(self, case: LoadCase, cleat: dict[str, Any]) -> tuple[RoadInput, np.ndarray]:
         """Cached :func:`roadnoise_utils.tire.ring.fe_reference.fe_cleat_response` (``cleat``: speed,
         height, base, shape, distance, duration, band)."""
-        self._no_cavity("fe_cleat_response")
+        self.spec.cavity.refuse_in("fe_cleat_response")
         state = self.load(case)
 
         def compute() -> tuple[RoadInput, np.ndarray]:
@@ -245,7 +237,7 @@ class RingModel(TireModel):
     def one_sided_run(self, case: LoadCase, cleat: dict[str, Any]) -> ContactRun:
         """Cached cleat passage with one-sided contact on the drum of ``case``: quasi-static for
         ``speed = 0``, else dynamic (``cleat``: speed, height, base, shape, distance, frozen, step, dt)."""
-        self._no_cavity("one_sided_run")
+        self.spec.cavity.refuse_in("one_sided_run")
         state = self.load(case)
 
         def compute() -> ContactRun:

@@ -194,5 +194,5 @@ def test_the_model_couples_the_air_where_its_file_enables_it(small_loaded, coupl
     peak = freqs[band][np.argmax(gain)]
     low, high = coupling.modes.freqs[1:3]
     assert low - 3.0 <= peak <= high + 3.0 and gain.max() > 2.0
-    with pytest.raises(ValueError, match=r"modal reduction: .*\[cavity\] enabled = false"):
+    with pytest.raises(ValueError, match=r"loaded_modal: .*\[cavity\] enabled = false"):
         with_air.modal_reduction(with_air.case())
