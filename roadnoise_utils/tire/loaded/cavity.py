@@ -73,11 +73,9 @@ def ring_volumes(tire: LoadedTire, u: np.ndarray) -> tuple[np.ndarray, np.ndarra
     axial = position[..., 1]
     r = np.einsum("qk,jqk->jq", points.shape, radius[:, points.nodes])
     dy = np.einsum("qk,jqk->jq", points.d_xi, axial[:, points.nodes])
-    base = tire.spec.geometry.rim_radius
+    base, width = rim_base(tire)  # the beads are held on the rim: the same at every ring and in every state
     outward = np.sign(np.sum(dy[0] * points.weight * (r[0] - base)))  # n_r along +dy points away from the axle
     volume = np.sum(0.5 * r**2 * outward * dy * points.weight, axis=1)
-    ends = section.face_lines(0)[[0, -1], [0, -1]]
-    width = np.abs(axial[:, ends[1]] - axial[:, ends[0]])
     volume -= 0.5 * base**2 * width  # the rim's base faces the axle across the beads' width
     angle = np.arctan2(position[..., 0].mean(axis=1), -position[..., 2].mean(axis=1))
     return angle, volume
