@@ -10,7 +10,8 @@ contact grid from the harmonic sum. Both then solve the same problem: contact fo
 
 the active set updated until no point in contact pulls and no point out of contact penetrates.
 :func:`held_contact` solves the same contact with the rise held instead of the load (the cleat
-passages of both models).
+passages), and :class:`StepContact` the contact of one time step of a dynamic passage on the step's
+compliance, its factor kept from step to step.
 """
 
 from __future__ import annotations
@@ -97,3 +98,80 @@ def held_contact(
             return forces, active, iteration
         active = new
     raise RuntimeError(f"quasi-static contact did not converge in {max_iterations} active-set iterations")
+
+
+#: Points by which a step's active set may differ from the factored one before :class:`StepContact` refactors it.
+MAX_BORDER = 48
+
+
+class StepContact:
+    """The one-sided contact of one time step on the step's compliance (``frozen``: the starting set held, bilateral).
+
+    The Cholesky factor of a base set ``B`` is kept; an active set ``S`` that differs from it by a
+    few points is solved through the bordered system with the added points ``A`` and the removed
+    points ``R`` (their force held at zero by a multiplier that takes their equation's place):
+
+    .. math:: \\begin{bmatrix} G_{BB} & U \\\\ U^T & D \\end{bmatrix}
+              \\begin{bmatrix} f_B \\\\ w \\end{bmatrix} =
+              \\begin{bmatrix} p_B \\\\ p_A, 0 \\end{bmatrix},\\qquad
+              U = [G_{BA}\\;E_R],\\; D = \\mathrm{diag}(G_{AA}, 0),
+
+    by its Schur complement on the border: a few triangular solves instead of a new factor.
+    The base is refactored when the border exceeds :data:`MAX_BORDER` points.
+    """
+
+    def __init__(self, compliance: np.ndarray, active: np.ndarray, frozen: bool, max_iterations: int = 100):
+        self.compliance, self.active, self.frozen = compliance, active.copy(), frozen
+        self.max_iterations = max_iterations
+        self._base = np.zeros(active.size, bool)
+        self._cholesky = None
+
+    def _rebase(self, active: np.ndarray) -> None:
+        idx = np.nonzero(active)[0]
+        self._cholesky = sla.cho_factor(self.compliance[np.ix_(idx, idx)], check_finite=False)
+        self._base, self._base_idx = active.copy(), idx
+
+    def _forces(self, active: np.ndarray, penetration: np.ndarray) -> np.ndarray:
+        """Forces of the active set (zero elsewhere) for the penetrations ``penetration`` (m)."""
+        added = np.nonzero(active & ~self._base)[0]
+        removed = np.nonzero(self._base & ~active)[0]
+        if self._cholesky is None or added.size + removed.size > MAX_BORDER:
+            self._rebase(active)
+            added, removed = added[:0], removed[:0]
+        base = self._base_idx
+        forces = np.zeros(active.size)
+        if base.size == 0:
+            if added.size:
+                forces[added] = sla.solve(self.compliance[np.ix_(added, added)], penetration[added], assume_a="pos")
+            return forces
+        y = sla.cho_solve(self._cholesky, penetration[base], check_finite=False)
+        if added.size + removed.size == 0:
+            forces[base] = y
+            return forces
+        border = np.zeros((base.size, added.size + removed.size))
+        border[:, : added.size] = self.compliance[np.ix_(base, added)]
+        border[np.searchsorted(base, removed), added.size + np.arange(removed.size)] = 1.0
+        x = sla.cho_solve(self._cholesky, border, check_finite=False)
+        schur = -border.T @ x
+        schur[: added.size, : added.size] += self.compliance[np.ix_(added, added)]
+        rhs = np.concatenate([penetration[added], np.zeros(removed.size)]) - border.T @ y
+        w = sla.solve(schur, rhs)
+        forces[base] = y - x @ w
+        forces[added] = w[: added.size]
+        forces[removed] = 0.0  # held at zero by the border (round-off cleared)
+        return forces
+
+    def solve(self, penetration: np.ndarray) -> tuple[np.ndarray, int]:
+        """Forces (N) for the penetrations of the predicted surface (m); updates :attr:`active`."""
+        active = self.active
+        for iteration in range(1, self.max_iterations + 1):
+            forces = self._forces(active, penetration)
+            if self.frozen:
+                return forces, iteration
+            remaining = penetration - self.compliance @ forces
+            new = np.where(active, forces > 0, remaining > 0)
+            if np.array_equal(new, active):
+                self.active = active
+                return forces, iteration
+            active = new
+        raise RuntimeError(f"dynamic contact did not converge in {self.max_iterations} active-set iterations")

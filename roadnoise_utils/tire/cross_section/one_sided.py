@@ -25,12 +25,11 @@ deflection-held solve against the load-held one).
 from __future__ import annotations
 
 import numpy as np
-import scipy.linalg as sla
 from threadpoolctl import threadpool_limits
 
 from ... import guards
 from ...road.cleat import point_heights
-from ..active_set import held_contact
+from ..active_set import StepContact, held_contact
 from ..contact import ContactRun, time_steps
 from . import spec as cross_section
 from .contact import extended_grid, harmonic_flexibility, vertical_compliance
@@ -43,8 +42,6 @@ HALF_LENGTH = 0.15
 #: The dynamic run's contact candidates: grid points within this of the road at the profile's
 #: highest (m); every step checks that no other point penetrates (``max_penetration``).
 NEAR_MARGIN = 0.01
-#: Points by which a step's active set may differ from the factored one before it is refactored.
-MAX_BORDER = 48
 #: Active-set iterations allowed per step.
 MAX_ITERATIONS = 100
 #: Points farther than this below the road at the profile's highest are left out of the solves (m);
@@ -188,7 +185,7 @@ def section_dynamic_runs(
     # points that can reach the road: within NEAR_MARGIN of it at the highest the profile puts them
     near = np.nonzero(base + heights.max(axis=1) > -NEAR_MARGIN)[0]
     compliance = stepper.effective_compliance()[np.ix_(near, near)]
-    solvers = [_StepContact(compliance, setup.contact[near], bool(f)) for f in frozen]
+    solvers = [StepContact(compliance, setup.contact[near], bool(f), MAX_ITERATIONS) for f in frozen]
     hub = np.zeros((runs, n_steps))
     points = np.zeros((runs, n_steps), int)
     on_profile = np.zeros((runs, n_steps), bool)
@@ -218,75 +215,3 @@ def section_dynamic_runs(
         )
         for r in range(runs)
     ]
-
-
-class _StepContact:
-    """The one-sided contact of one time step on the step's compliance.
-
-    The Cholesky factor of a base set ``B`` is kept; an active set ``S`` that differs from it by a
-    few points is solved through the bordered system with the added points ``A`` and the removed
-    points ``R`` (their force held at zero by a multiplier that takes their equation's place):
-
-    .. math:: \\begin{bmatrix} G_{BB} & U \\\\ U^T & D \\end{bmatrix}
-              \\begin{bmatrix} f_B \\\\ w \\end{bmatrix} =
-              \\begin{bmatrix} p_B \\\\ p_A, 0 \\end{bmatrix},\\qquad
-              U = [G_{BA}\\;E_R],\\; D = \\mathrm{diag}(G_{AA}, 0),
-
-    by its Schur complement on the border: a few triangular solves instead of a new factor.
-    The base is refactored when the border exceeds :data:`MAX_BORDER` points.
-    """
-
-    def __init__(self, compliance: np.ndarray, active: np.ndarray, frozen: bool):
-        self.compliance, self.active, self.frozen = compliance, active.copy(), frozen
-        self._base = np.zeros(active.size, bool)
-        self._cholesky = None
-
-    def _rebase(self, active: np.ndarray) -> None:
-        idx = np.nonzero(active)[0]
-        self._cholesky = sla.cho_factor(self.compliance[np.ix_(idx, idx)], check_finite=False)
-        self._base, self._base_idx = active.copy(), idx
-
-    def _forces(self, active: np.ndarray, penetration: np.ndarray) -> np.ndarray:
-        """Forces of the active set (zero elsewhere) for the penetrations ``penetration`` (m)."""
-        added = np.nonzero(active & ~self._base)[0]
-        removed = np.nonzero(self._base & ~active)[0]
-        if self._cholesky is None or added.size + removed.size > MAX_BORDER:
-            self._rebase(active)
-            added, removed = added[:0], removed[:0]
-        base = self._base_idx
-        forces = np.zeros(active.size)
-        if base.size == 0:
-            if added.size:
-                forces[added] = sla.solve(self.compliance[np.ix_(added, added)], penetration[added], assume_a="pos")
-            return forces
-        y = sla.cho_solve(self._cholesky, penetration[base], check_finite=False)
-        if added.size + removed.size == 0:
-            forces[base] = y
-            return forces
-        border = np.zeros((base.size, added.size + removed.size))
-        border[:, : added.size] = self.compliance[np.ix_(base, added)]
-        border[np.searchsorted(base, removed), added.size + np.arange(removed.size)] = 1.0
-        x = sla.cho_solve(self._cholesky, border, check_finite=False)
-        schur = -border.T @ x
-        schur[: added.size, : added.size] += self.compliance[np.ix_(added, added)]
-        rhs = np.concatenate([penetration[added], np.zeros(removed.size)]) - border.T @ y
-        w = sla.solve(schur, rhs)
-        forces[base] = y - x @ w
-        forces[added] = w[: added.size]
-        forces[removed] = 0.0  # held at zero by the border (round-off cleared)
-        return forces
-
-    def solve(self, penetration: np.ndarray) -> tuple[np.ndarray, int]:
-        """Forces (N) for the penetrations of the predicted surface (m); updates :attr:`active`."""
-        active = self.active
-        for iteration in range(1, MAX_ITERATIONS + 1):
-            forces = self._forces(active, penetration)
-            if self.frozen:
-                return forces, iteration
-            remaining = penetration - self.compliance @ forces
-            new = np.where(active, forces > 0, remaining > 0)
-            if np.array_equal(new, active):
-                self.active = active
-                return forces, iteration
-            active = new
-        raise RuntimeError(f"dynamic contact did not converge in {MAX_ITERATIONS} active-set iterations")

@@ -199,11 +199,17 @@ def size_groups(entries: list[SteppedHarmonic]) -> list[list[SteppedHarmonic]]:
     return [by_size[size] for size in sorted(by_size)]
 
 
-class _Group:
-    """Harmonics of one basis size, padded to it, mass-orthonormal: operators and states (sets along the last axis)."""
+class StepGroup:
+    """Reduced models of one basis size, padded to it, mass-orthonormal: their generalised-alpha operators and
+    states, with ``columns`` independent load cases along the last axis of every state.
+
+    Each entry is a :class:`SteppedHarmonic` (a harmonic of the cross-section tire, or a whole
+    reduced model stepped as one entry); the entries of harmonic ``n = 1`` are the ones whose
+    motion moves the centre of mass (:attr:`moving`).
+    """
 
     def __init__(
-        self, harmonics: list[SteppedHarmonic], dt: float, branches: dict[str, PronyBranches], scheme, runs: int = 1
+        self, harmonics: list[SteppedHarmonic], dt: float, branches: dict[str, PronyBranches], scheme, columns: int = 2
     ):
         self.n = np.array([h.n for h in harmonics])
         size = max(h.projected.gas.shape[0] for h in harmonics)
@@ -237,24 +243,47 @@ class _Group:
         self.harmonics = np.unique(self.n)  # a harmonic's entries (its whole basis or its halves) are adjacent
         self.firsts = np.searchsorted(self.n, self.harmonics)
         self.size, self.names = size, names
-        self.q = np.zeros((h_count, size, 2 * runs))  # sets of run r at 2 r (symmetric) and 2 r + 1
+        self.q = np.zeros((h_count, size, columns))
         self.velocity = np.zeros_like(self.q)
         self.acceleration = np.zeros_like(self.q)
         self.unbalance = np.zeros_like(self.q)  # external minus internal force (M = I: the inertia force)
         self.prony = SharedPronyStates({c: branches[c] for c in names}, self.q.size)  # one state per relaxation time
         self.history = {c: np.zeros(self.q.size) for c in names}  # the next step's, kept by each update
-        self.stacked = np.zeros((h_count, self.operator.shape[2], 2 * runs))  # the products' right-hand side
+        self.stacked = np.zeros((h_count, self.operator.shape[2], columns))  # the products' right-hand side
 
     def flexibility(self) -> np.ndarray:
         """:math:`(1 - \\alpha_f) C A^{-1} C^T` per harmonic (h, d, d): the step's compliance at the contact DOF."""
         return np.matmul(self.contact, self.load)
 
     def start(self, loads: np.ndarray) -> None:
-        """At rest under the static contact ``loads`` (h, d, 2 runs), every Maxwell branch relaxed."""
+        """At rest under the static contact ``loads`` (h, d, columns), every Maxwell branch relaxed."""
         self.q = np.matmul(self.static, np.matmul(np.transpose(self.contact, (0, 2, 1)), loads))
         for array in (self.velocity, self.acceleration, self.unbalance):
             array[:] = 0.0
         self.history = self.prony.start(self.q.ravel())
+
+    def predict(self, dt: float, scheme: GeneralizedAlpha) -> np.ndarray:
+        """The coordinates at the step's end with no new contact load (h, size, columns)."""
+        inertia = (1.0 - scheme.alpha_m) / (scheme.beta * dt**2)
+        ahead = self.q + dt * self.velocity + (0.5 - scheme.beta) * dt**2 * self.acceleration
+        size = self.size
+        self.stacked[:, :size] = inertia * ahead - scheme.alpha_m * self.acceleration + scheme.alpha_f * self.unbalance
+        for b, c in enumerate(self.names, start=1):
+            self.stacked[:, b * size : (b + 1) * size] = self.history[c].reshape(self.q.shape)
+        return np.matmul(self.operator, self.stacked)
+
+    def advance(self, free: np.ndarray, loads: np.ndarray, dt: float, scheme: GeneralizedAlpha) -> None:
+        """Complete the step predicted as ``free`` (:meth:`predict`) under the contact ``loads`` (h, d, columns)."""
+        a = scheme
+        q_new = free + np.matmul(self.load, loads)
+        ahead = self.q + dt * self.velocity + (0.5 - a.beta) * dt**2 * self.acceleration
+        acceleration = (q_new - ahead) / (a.beta * dt**2)
+        self.velocity = self.velocity + dt * ((1.0 - a.gamma) * self.acceleration + a.gamma * acceleration)
+        self.unbalance = (
+            (1.0 - a.alpha_m) * acceleration + a.alpha_m * self.acceleration - a.alpha_f * self.unbalance
+        ) / (1.0 - a.alpha_f)
+        self.prony.update_in_place(self.q.ravel(), q_new.ravel(), self.history)
+        self.q, self.acceleration = q_new, acceleration
 
 
 class HarmonicStepper:
@@ -311,7 +340,7 @@ class HarmonicStepper:
         parts = [reduced[:first_static], *size_groups(reduced[first_static:])]  # the modal harmonics first
         self.n_harmonics = n_all
         self.scheme = GeneralizedAlpha(guards.real("spectral_radius", spectral_radius, 0.0, 1.0))
-        self.groups = [_Group(part, self.dt, self.branches, self.scheme, self.runs) for part in parts if part]
+        self.groups = [StepGroup(part, self.dt, self.branches, self.scheme, 2 * self.runs) for part in parts if part]
         self.grid = grid
         c = grid.n_cols
         n = np.arange(n_all)
@@ -398,16 +427,7 @@ class HarmonicStepper:
 
     def predict(self) -> np.ndarray:
         """The next step with no new contact force: grid displacement (m); kept for :meth:`advance`."""
-        dt, a = self.dt, self.scheme
-        inertia = (1.0 - a.alpha_m) / (a.beta * dt**2)
-        self._free = []
-        for g in self.groups:
-            ahead = g.q + dt * g.velocity + (0.5 - a.beta) * dt**2 * g.acceleration
-            size = g.size
-            g.stacked[:, :size] = inertia * ahead - a.alpha_m * g.acceleration + a.alpha_f * g.unbalance
-            for b, c in enumerate(g.names, start=1):
-                g.stacked[:, b * size : (b + 1) * size] = g.history[c].reshape(g.q.shape)
-            self._free.append(np.matmul(g.operator, g.stacked))
+        self._free = [g.predict(self.dt, self.scheme) for g in self.groups]
         return self.vertical(self._contact_values(self._free))
 
     def advance(self, forces: np.ndarray) -> float | np.ndarray:
@@ -415,18 +435,9 @@ class HarmonicStepper:
 
         With several runs: forces (runs, n_cols, n_rows), hub forces (runs,).
         """
-        dt, a = self.dt, self.scheme
         hub = self.spread * self._per_run(forces).sum(axis=(1, 2))
         for (g, part), free in zip(self._split(self.loads(forces)), self._free):
-            q_new = free + np.matmul(g.load, part)
-            ahead = g.q + dt * g.velocity + (0.5 - a.beta) * dt**2 * g.acceleration
-            acceleration = (q_new - ahead) / (a.beta * dt**2)
-            g.velocity = g.velocity + dt * ((1.0 - a.gamma) * g.acceleration + a.gamma * acceleration)
-            g.unbalance = ((1.0 - a.alpha_m) * acceleration + a.alpha_m * g.acceleration - a.alpha_f * g.unbalance) / (
-                1.0 - a.alpha_f
-            )
-            g.prony.update_in_place(g.q.ravel(), q_new.ravel(), g.history)
-            g.q, g.acceleration = q_new, acceleration
+            g.advance(free, part, self.dt, self.scheme)
             for e in g.moving:  # the inertia at t_{n+1} is the unbalance (the scheme's acceleration lags it)
                 hub -= g.momentum[e] @ g.unbalance[e, :, 0::2]
         return float(hub[0]) if self.runs == 1 else hub
