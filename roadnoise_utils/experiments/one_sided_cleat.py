@@ -135,7 +135,7 @@ class OneSidedCleatTest:
         kmh = self.conditions.cleat.dynamic_kmh
         rows = {
             **cleat_numbers(self.quasi_static.peak_force, self.dynamic.peak_force, kmh, self.decay),
-            "contact points, static": int(self.static.contact.sum()),
+            "contact points, static": self.static.contact_points,
             "contact points, fewest (quasi-static)": int(self.quasi_static.contact_points.min()),
             f"contact points, fewest ({self.conditions.cleat.dynamic_kmh:.0f} km/h)": int(
                 self.dynamic.contact_points.min()

@@ -144,6 +144,11 @@ class Footprint(FootprintMeasures):
     tasselli: Tasselli
     node_pressure: np.ndarray
 
+    @property
+    def contact_points(self) -> int:
+        """How many tread points (FE nodes) the road pushes."""
+        return int(self.node_pressure.size)
+
     def force_balance(self) -> float:
         """Largest relative imbalance of the load against what carries it (-): the hub force here; a
         model with contact forces checks them too. Zero up to round-off on an FE model's solve."""

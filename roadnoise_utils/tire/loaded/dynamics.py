@@ -132,7 +132,7 @@ def tangent_parts(tire: LoadedTire, u: np.ndarray, p: float) -> tuple[dict, sp.c
     return compounds, pneumatic.tocsr()
 
 
-def linearise(tire: LoadedTire, state: StaticState) -> LinearisedTire:
+def linearise(tire: LoadedTire, state: StaticState, nodes: np.ndarray | None = None) -> LinearisedTire:
     """The loaded tire about ``state``, contact set frozen: its stiffness parts, mass and DOF sets.
 
     On a drum each contact node's ``x``/``z`` pair is turned into its tangent and normal DOF (the
@@ -141,14 +141,20 @@ def linearise(tire: LoadedTire, state: StaticState) -> LinearisedTire:
     moved up by one moves the node ``n_z`` along its normal and the drum's surface ``-n_x`` along
     its tangent: the curvature term acts on the node's slide relative to the drum (the mixed
     derivative of the constraint), so a rigid motion of tire and drum together gives no force.
+
+    ``nodes``: the tread nodes whose normal DOF are the road's (default the state's contact nodes;
+    the one-sided cleat runs give every tread node the cleat may reach, those out of contact
+    carrying no force and so no curvature term).
     """
     contact = road_contact.contact_of(tire, state)
+    nodes = state.contact if nodes is None else np.asarray(nodes, int)
+    contact.active = nodes
     compounds, pneumatic = tangent_parts(tire, state.u, state.pressure)
     spec = tire.spec
     mass = solid.mass_matrix(solid.element_groups(tire.mesh, spec, arc_points=3), tire.n_dof)
-    _, normals = contact.gaps_and_normals(state.contact, state.u)
+    _, normals = contact.gaps_and_normals(nodes, state.u)
     frame = contact.frame(normals)
-    road = 3 * np.asarray(state.contact, int) + 2
+    road = 3 * nodes + 2
     n_dof, n_road = tire.n_dof, road.size
     curvature = sp.csr_matrix((n_dof, n_dof))
     slide = sp.csc_matrix((n_dof, n_road + 1))

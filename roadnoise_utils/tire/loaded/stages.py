@@ -16,6 +16,10 @@ stage                        caches
 :func:`round_stiffness`      K_v with the geometric nonlinearity off (:mod:`.linearised`)
 :func:`reduced_footprint`    the linearised tire's Craig-Bampton reduction, its held modes' wave numbers
 :func:`loaded_modal`         the paper's modal reduction (Fig. 4) (:mod:`roadnoise_utils.tire.loaded.modal`)
+:func:`quasi_static_cleat`   a cleat's quasi-static passage on the drum, one-sided contact
+                             (:func:`.one_sided.quasi_static_run`)
+:func:`dynamic_cleat_runs`   its dynamic passage, one-sided and frozen contact stepped together
+                             (:func:`.one_sided.dynamic_runs`)
 ===========================  ==========================================================================
 
 :func:`built_tire` (the swept mesh and its integration points: about a second) and :func:`cavity_areas`
@@ -31,9 +35,11 @@ import numpy as np
 from ... import guards
 from ...repro.cache import cached
 from ...response.modal_reduction import ModalReduction, check_options
+from ...road.cleat import cleat_profile
+from ..contact import ContactRun
 from ..model import DEFAULT_FREQS, Footprint, FRFResult, LoadCase
 from ..schema import NO_CAVITY
-from . import cavity, dynamics, footprint, linearised, loading, modal, road_contact, statics
+from . import cavity, dynamics, footprint, linearised, loading, modal, one_sided, road_contact, statics
 from .mesh import graded_arcs
 from .spec import LoadedSpec
 from .statics import LoadedTire, StaticState
@@ -210,3 +216,44 @@ def loaded_modal(
 
     inputs = {"tire": spec, **case.key(), **options}
     return cached(loaded_modal, inputs, compute, runs=(modal, dynamics, loading, statics))
+
+
+def _cleat_inputs(spec: LoadedSpec, case: LoadCase, height: float, base: float, shape: str, distance) -> dict:
+    """A cleat passage's key: the tire without its air, the drum's case, the cleat (m) and the travel (m)."""
+    spec.construction.cavity.refuse_in("one_sided_run")
+    return {
+        "tire": without_air(spec), **case.key(), "height": float(height), "base": float(base), "shape": shape,
+        "distance": tuple(float(d) for d in distance),
+    }  # fmt: skip
+
+
+def quasi_static_cleat(
+    spec: LoadedSpec, case: LoadCase, height: float, base: float, shape: str, distance, step: float = 1.0e-3
+) -> ContactRun:
+    """Cached :func:`.one_sided.quasi_static_run` of a cleat (m) over the tire loaded on the case's drum
+    (:func:`loaded_state`), solved every ``step`` m of travel; refused with the air coupled."""
+    inputs = {**_cleat_inputs(spec, case, height, base, shape, distance), "step": float(step)}
+    state = loaded_state(spec, case)
+
+    def compute() -> ContactRun:
+        profile = cleat_profile(height, base, shape)
+        return one_sided.quasi_static_run(built_tire(spec), state, profile, inputs["distance"], inputs["step"])
+
+    return cached(quasi_static_cleat, inputs, compute, runs=(one_sided, dynamics, loading, road_contact, statics))
+
+
+def dynamic_cleat_runs(
+    spec: LoadedSpec, case: LoadCase, speed: float, height: float, base: float, shape: str, distance, dt=None
+) -> tuple[ContactRun, ContactRun]:
+    """Cached :func:`.one_sided.dynamic_runs` at ``speed`` (m/s) over the tire loaded on the case's drum:
+    (one-sided contact, frozen contact), stepped together every ``dt`` s; refused with the air coupled."""
+    options = {"speed": float(speed), "dt": None if dt is None else float(dt)}
+    inputs = {**_cleat_inputs(spec, case, height, base, shape, distance), **options}
+    state = loaded_state(spec, case)
+
+    def compute() -> tuple[ContactRun, ContactRun]:
+        profile = cleat_profile(height, base, shape)
+        runs = one_sided.dynamic_runs(built_tire(spec), state, profile, speed, inputs["distance"], dt, (False, True))
+        return tuple(runs)
+
+    return cached(dynamic_cleat_runs, inputs, compute, runs=(one_sided, dynamics, loading, road_contact, statics))

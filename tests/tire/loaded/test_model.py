@@ -139,11 +139,10 @@ def test_where_the_tire_softens_the_secant_s_step_falls_short_once_then_road_ste
 def test_sticking_contact_and_what_it_lacks_are_refused_by_name(small_loaded, model_tire):
     with pytest.raises(ValueError, match="stick = True"):
         small_loaded.fixed_hub_frfs(small_loaded.case(), stick=True)
-    assert small_loaded.has("modal_reduction") and small_loaded.has("cavity")
-    for capability in ("one_sided_cleat", "released_hub"):
-        assert not small_loaded.has(capability)
-        with pytest.raises(NotApplicable, match=capability):
-            small_loaded.require(capability)
+    assert small_loaded.has("modal_reduction") and small_loaded.has("cavity") and small_loaded.has("one_sided_cleat")
+    assert not small_loaded.has("released_hub")
+    with pytest.raises(NotApplicable, match="released_hub"):
+        small_loaded.require("released_hub")
     assert small_loaded.equivalent_dof() == model_tire.n_dof == 4080
 
 
