@@ -167,7 +167,10 @@ def damped_components(y: np.ndarray, dt: float, n_components: int = 6) -> pd.Dat
     z = np.linalg.eigvals(np.linalg.pinv(v[:-1]) @ v[1:])
     s = np.log(z.astype(complex)) / dt
     basis = np.exp(np.outer(np.arange(y.size) * dt, s))
-    amplitude = np.linalg.lstsq(basis, y.astype(complex), rcond=None)[0]
+    # each column scaled to unit norm first: a spurious growing pole (noise the pencil fits, e.g. a
+    # contact's chatter) has a column ~1e19 times the others, and least squares would cut them all off
+    norms = np.linalg.norm(basis, axis=0)
+    amplitude = np.linalg.lstsq(basis / norms, y.astype(complex), rcond=None)[0] / norms
     rows = []
     for sk, ak in zip(s, amplitude):
         if sk.imag <= 0:
