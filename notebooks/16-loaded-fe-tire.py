@@ -404,6 +404,83 @@ print(f"paper, Fig. 9 (simulated): {paper_peak:.0f} N")
 # its centre's, where the force dips between its two peaks.
 
 # %% [markdown]
+# ### With one-sided contact about the loaded state (the measured test, Fig. 8)
+#
+# In the measured test the tread beside the 15 mm cleat lifts off the drum, which no linear
+# chain can do; notebook 08 runs the test with one-sided contact on the ring and the
+# cross-section tire. The loaded FE tire runs it about its own loaded state on the drum
+# (`tire/loaded/one_sided.py`): every tread node the cleat can reach carries a force along the
+# drum's normal through it — its loaded force plus the change — and lifts off or touches. The
+# quasi-static passage solves that contact on the loaded tangent's compliance at every
+# millimetre of travel, the hub held; the 30 km/h passage steps the linearised tire on a
+# Craig-Bampton basis of those nodes, each compound's stiffness carrying the Prony series of
+# its law, and is compared band-limited to the paper's 250 Hz. Held bilateral on its loaded
+# contact set, the same stepping must give the frequency domain of its footprint FRFs: the
+# frozen check printed below.
+
+# %%
+# NBVAL_IGNORE_OUTPUT
+# The measured test with one-sided contact on every model (cached stages; the ring on its refined mesh, as in
+# notebook 08) and the loaded FE tire's frozen check
+contact_tests = {label: ru.experiments.one_sided_cleat_test(tire) for label, tire in tires.items()}
+loaded_frozen = ru.experiments.frozen_check(model)
+measured = {
+    "measured, quasi-static": ru.claims.paper_value("contact_quasi_static"),
+    "measured, 30 km/h": ru.claims.paper_value("contact_dynamic"),
+}
+
+# %%
+# Fig. 8 analogue on every model: the quasi-static passage and the 30 km/h one, with the measured peaks
+fig, axes = plt.subplots(1, 2, figsize=(13, 4.4), sharey=True)
+for ax, (title, run_of, reach) in zip(
+    axes,
+    [
+        ("quasi-static", lambda t: t.quasi_static, (-0.12, 0.13)),
+        ("30 km/h (0-250 Hz on the FE tires)", lambda t: t.dynamic, (-0.15, 0.4)),
+    ],
+):
+    ru.figures.contact_loss.plot_contact_runs(
+        {label: run_of(t) for label, t in contact_tests.items()}, {}, ax=ax, title=title, paper=measured, x_range=reach
+    )
+fig.suptitle("The cleat test with one-sided contact, every model")
+plt.show()
+
+# %%
+# NBVAL_CHECK_OUTPUT
+# Measured vs ours: the test's quantities on every model, and the loaded FE tire's frozen check
+table = pd.concat({label: t.to_frame()["one-sided contact"] for label, t in contact_tests.items()}, axis=1)
+reference = {
+    "quasi-static peak (N)": "contact_quasi_static",
+    f"peak at {conditions.dynamic_kmh:.0f} km/h (N)": "contact_dynamic",
+    "dynamic / quasi-static": "contact_ratio",
+    "decay: leading component (Hz)": "contact_decay",
+}
+table.insert(0, "measured", pd.Series({row: ru.claims.paper_value(claim) for row, claim in reference.items()}))
+print(table.to_string(float_format=lambda v: f"{v:.3g}", na_rep=""))
+lifted = (
+    table.loc["quasi-static peak (N)", "loaded FE"]
+    / sampling.loc["averaged over the nodes' shape functions", "loaded FE"]
+)
+print(f"loaded FE: one-sided quasi-static peak over the linear chain's: {lifted:.2f}")
+print(
+    f"loaded FE, contact frozen, {conditions.dynamic_kmh:.0f} km/h, 0-250 Hz: peak {loaded_frozen.peak_difference:+.1%}, "
+    f"RMS {loaded_frozen.rms_difference:.1%} against the frequency domain of its footprint FRFs"
+)
+
+# %% [markdown]
+# About its loaded state the FE tire of the paper's kind lifts its tread off the drum beside the
+# cleat as the other two do, and contact loss raises its quasi-static peak well above its linear
+# chain's (the ratio printed above), to within the measured value's tolerance but the lowest of
+# the three: the peak follows the drum footprint's stiffness, and the loaded FE tire is the
+# softest there, its entry row carrying the least (the rows above). Its dynamic amplification is
+# the largest of the three and the nearest the measured 2.2; its 30 km/h peak is the product of
+# both and stays below the measured one (the reproduction report, claim `contact_dynamic`). The
+# decay after the cleat is its first vertical mode, as measured. The frozen run matches the
+# frequency domain of its FRFs; the tests (`tests/tire/loaded/test_one_sided.py`) check the
+# quasi-static hub force against the rim's reaction and the momentum balance the dynamic runs
+# use, and a cleat too low to lift any node against the FRFs at rest.
+
+# %% [markdown]
 # ## 6. The paper's modal reduction on its own kind of tire (Fig. 4-5)
 #
 # The paper freezes the moduli at the most relevant vertical mode ("FET70Hz": the storage
@@ -487,7 +564,8 @@ print(side.to_string())
 # `tests/tire/loaded/` — the tangent against finite differences of the residual, a patch test
 # of the solids, force balance at every step, the inflated tire's modes against the waveguide's
 # harmonics, the linearised solids about the round tire against the waveguide, the reduced
-# FRFs against a direct solve; `benchmarks/bench_loaded_tire.py` — mesh convergence of $K_v$,
+# FRFs against a direct solve, the one-sided cleat runs against the rim's reaction, the FRFs at
+# rest and their frequency domain; `benchmarks/bench_loaded_tire.py` — mesh convergence of $K_v$,
 # footprint and first resonance, the modes on the file's own mesh, the times;
 # `benchmarks/bench_published_tire.py` — the three models at 205/60 R15 beside the published
 # MF-Swift tire of that size.
