@@ -456,7 +456,7 @@ reference = {
     "decay: leading component (Hz)": "contact_decay",
 }
 table.insert(0, "measured", pd.Series({row: ru.claims.paper_value(claim) for row, claim in reference.items()}))
-print(table.to_string(float_format=lambda v: f"{v:.3g}", na_rep=""))
+print(table.to_string(float_format=lambda v: f"{v:.0f}" if abs(v) >= 100 else f"{v:.3g}", na_rep=""))
 lifted = (
     table.loc["quasi-static peak (N)", "loaded FE"]
     / sampling.loc["averaged over the nodes' shape functions", "loaded FE"]
@@ -472,7 +472,11 @@ print(
 # cleat as the other two do, and contact loss raises its quasi-static peak well above its linear
 # chain's (the ratio printed above), to within the measured value's tolerance but the lowest of
 # the three: the peak follows the drum footprint's stiffness, and the loaded FE tire is the
-# softest there, its entry row carrying the least (the rows above). Its dynamic amplification is
+# softest there, its entry row carrying the least (the rows above). Its base curve has the shape
+# of its rows' influences: peaks where the cleat meets and leaves the footprint's stiff ends, and
+# far less than the other two models' plateau in between, where its loaded footprint carries
+# little static stiffness; its ripple is the cleat passing node by node over a coarser
+# footprint mesh than theirs. Its dynamic amplification is
 # the largest of the three and the nearest the measured 2.2; its 30 km/h peak is the product of
 # both and stays below the measured one (the reproduction report, claim `contact_dynamic`). The
 # decay after the cleat is its first vertical mode, as measured. The frozen run matches the

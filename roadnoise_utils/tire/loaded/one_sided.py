@@ -126,12 +126,20 @@ def cleat_contact(tire: LoadedTire, state: StaticState, profile, travel: np.ndar
     after, before = arcs[(ring + 1) % n_rings], arcs[(ring - 1) % n_rings]
     ahead = np.maximum(after, before) - arcs
     behind = arcs - np.minimum(after, before)
-    axle = float(np.mean(tire.mesh.coordinates[tire.mesh.bead_nodes, 2]))
-    below = (tire.mesh.coordinates[tire.tread, 2] < axle).reshape(arcs.shape)  # the drum's side of the wheel
+    height = tire.mesh.coordinates[tire.tread, 2]
+    below = (height < 0.5 * (height.max() + height.min())).reshape(arcs.shape)  # the drum's side of the axle
     window = (np.abs(arcs) <= HALF_LENGTH) & below
     watched = tire.tread.reshape(arcs.shape)[window]
     heights = point_heights(arcs[window], behind[window], ahead[window], profile, travel)
-    gap, normals = road_contact.contact_of(tire, state).gaps_and_normals(watched, state.u)
+    contact = road_contact.contact_of(tire, state)
+    outside = below & ~window  # no tread node outside the window may come near the profile
+    reach = point_heights(arcs[outside], behind[outside], ahead[outside], profile, travel).max(axis=1, initial=0.0)
+    if np.any(contact.gaps_and_normals(tire.tread.reshape(arcs.shape)[outside], state.u)[0] < reach + MARGIN):
+        raise ValueError(
+            f"the profile would come within {MARGIN * 1e3:.0f} mm of tread nodes beyond {HALF_LENGTH * 1e3:.0f} mm "
+            "of the axle along the drum, outside the cleat runs' window: valid profiles are lower or shorter"
+        )
+    gap, normals = contact.gaps_and_normals(watched, state.u)
     gap = np.where(np.isin(watched, state.contact), 0.0, np.maximum(gap, 0.0))
     candidate = gap < heights.max(axis=1) + MARGIN
     nodes = watched[candidate]

@@ -61,8 +61,8 @@ def test_the_quasi_static_hub_force_is_the_rim_reaction_and_the_momentum_balance
 def test_a_cleat_too_low_to_lift_a_node_gives_the_linear_footprint_s_static_transfer(small_loaded, drum_case):
     """At 10 um no node lifts off (the loaded forces are >= 15 N, a node's change is < 1 N) and the
     cleat reaches only nodes in contact: the run is the footprint FRFs at 0 Hz times the drum's rise
-    under each contact node (a different reduction of the same tangent, with the road's motion
-    vertical rather than along each node's normal: the drum's curvature term differs by ~lambda/R)."""
+    under each contact node (a different reduction of the same tangent, the road's motion vertical
+    rather than along each node's normal, the drum's surface sliding with it: 3.8e-6 apart here)."""
     tire, state = stages.built_tire(small_loaded.spec), stages.loaded_state(small_loaded.spec, drum_case)
     profile = cleat_profile(1e-5, 0.015, "triangle")
     travel = np.arange(-0.08, 0.08, 2e-3)
@@ -72,7 +72,7 @@ def test_a_cleat_too_low_to_lift_a_node_gives_the_linear_footprint_s_static_tran
     static = small_loaded.fixed_hub_frfs(drum_case).H_points[:, 0].real
     linear = static @ motion
     assert np.abs(linear).max() > 0.1  # N: the check is not vacuous
-    assert np.abs(run.hub_force - linear).max() < 2e-3 * np.abs(linear).max()
+    assert np.abs(run.hub_force - linear).max() < 1e-4 * np.abs(linear).max()
 
 
 def test_the_frozen_run_is_the_frequency_domain_of_the_footprint_frfs(small_loaded, drum_case, dynamic):
@@ -105,6 +105,12 @@ def test_bad_input_is_refused_by_name(small_loaded, drum_case, drum_state):
     flat = stages.loaded_state(small_loaded.spec, small_loaded.case("flat"))
     with pytest.raises(ValueError, match="drum"):
         one_sided.quasi_static_run(tire, flat, profile, (-0.1, 0.1))
+
+    def plateau(x: np.ndarray) -> np.ndarray:  # 0.2 m high, 0.8 m long: the test mesh's far rings meet it
+        return np.where(np.abs(x) < 0.4, 0.2, 0.0)
+
+    with pytest.raises(ValueError, match="tread nodes beyond 150 mm of the axle"):
+        one_sided.quasi_static_run(tire, drum_state, plateau, (-0.1, 0.1))
     with pytest.raises(ValueError, match="already touches the tread"):
         one_sided.dynamic_runs(tire, drum_state, profile, SPEED, (-0.02, 0.1))
     with pytest.raises(ValueError, match="frozen"):
