@@ -54,8 +54,8 @@ from .statics import LoadedTire, StaticState
 #: The candidates lie within this of the axle along the drum (m): a 15 mm cleat on the 1.25 m drum
 #: meets the 165/65 R14 about 105 mm ahead.
 HALF_LENGTH = 0.15
-#: The candidates' loaded gap is below the cleat's height plus this (m); every step checks that no
-#: other tread node within :data:`HALF_LENGTH` penetrates.
+#: The candidates' loaded gap is below the cleat's height plus this (m); a step in which any other
+#: tread node within :data:`HALF_LENGTH` penetrates the drum is refused (:func:`check_outside`).
 MARGIN = 0.005
 #: Active-set iterations allowed per contact solve.
 MAX_ITERATIONS = 100
@@ -128,6 +128,7 @@ def cleat_contact(tire: LoadedTire, state: StaticState, profile, travel: np.ndar
     behind = arcs - np.minimum(after, before)
     height = tire.mesh.coordinates[tire.tread, 2]
     below = (height < 0.5 * (height.max() + height.min())).reshape(arcs.shape)  # the drum's side of the axle
+    below &= ~np.isin(3 * tire.tread + 2, tire.fixed).reshape(arcs.shape)  # the bead stations' outer nodes are held
     window = (np.abs(arcs) <= HALF_LENGTH) & below
     watched = tire.tread.reshape(arcs.shape)[window]
     heights = point_heights(arcs[window], behind[window], ahead[window], profile, travel)
@@ -152,6 +153,8 @@ def cleat_contact(tire: LoadedTire, state: StaticState, profile, travel: np.ndar
             f"the loaded footprint reaches beyond {HALF_LENGTH * 1e3:.0f} mm of the axle along the drum: "
             "a footprint too long for the cleat runs' window"
         )
+    if np.count_nonzero(force > 0.0) != state.contact.size:
+        raise RuntimeError("state: a contact node carries no force along the drum's normal (not a loaded equilibrium)")
     return CleatContact(nodes, watched, candidate, normals, gap, force, heights)
 
 
@@ -248,6 +251,7 @@ def quasi_static_run(
         balance = max(balance, abs(vertical @ change - hub[k]))
         points[k], on_profile[k] = active.sum(), bool(np.any(active & (heights[:, k] > 0)))
         gap = contact.gap + compliance.watched @ change - contact.heights[:, k]
+        check_outside(contact, gap, travel[k])
         gap[np.flatnonzero(contact.candidate)[active]] = 0.0
         worst, most = max(worst, float(-gap.min())), max(most, iterations)
     off = ~on_profile
@@ -315,6 +319,11 @@ def cleat_model(tire: LoadedTire, state: StaticState, contact: CleatContact, f_m
     columns = np.hstack([basis[lin.road].T, watch.T, (basis.T @ (lin.curvature @ e))[:, None]])
     projected = Projected(compounds, gas, held(reduced.mass), columns, basis.T @ (lin.mass @ e))
     passive, dropped = passive_part(projected, list(compounds))
+    if dropped:
+        guards.warn(
+            f"{dropped} direction(s) of negative static stiffness left out of the stepped loaded tire "
+            "(its tangent with the candidates free is not definite there)"
+        )
     rotated = passive.contact
     passive = replace(passive, contact=rotated[:, :n_road])
     entry = SteppedHarmonic(1, passive, reduced.n_modes, dropped)  # n = 1: its momentum counts
@@ -381,6 +390,7 @@ def dynamic_runs(
                 on_profile[r, k] = bool(np.any(solver.active & (heights[:, k] > 0)))
                 if not solver.frozen:
                     gap = gaps[:, r].copy()
+                    check_outside(contact, gap, travel[k])
                     gap[candidates[solver.active]] = 0.0
                     worst[r] = max(worst[r], float(-gap.min()))
     return [
@@ -390,10 +400,21 @@ def dynamic_runs(
 
 
 def _node_spacing(tire: LoadedTire, state: StaticState) -> float:
-    """The smallest distance along the drum between neighbouring tread rings in the footprint (m)."""
+    """The smallest distance along the drum from a contact node to the next ring's node of its column (m)."""
     arcs = drum_arcs(tire, state)
-    rings = np.unique(np.flatnonzero(np.isin(tire.tread, state.contact)) // arcs.shape[1])
-    return float(np.min(np.abs(np.diff(arcs[rings, 0])))) if rings.size > 1 else float("inf")
+    ring, column = np.nonzero(np.isin(tire.tread.reshape(arcs.shape), state.contact))
+    return float(np.min(np.abs(arcs[(ring + 1) % arcs.shape[0], column] - arcs[ring, column])))
+
+
+def check_outside(contact: CleatContact, gap: np.ndarray, travel: float) -> None:
+    """Refuse a step in which a watched node that is not a candidate penetrates the drum (``gap`` (W,), m):
+    the candidates' :data:`MARGIN` missed a node the tire's motion brings down."""
+    outside = gap[~contact.candidate]
+    if outside.size and outside.min() < 0.0:
+        raise RuntimeError(
+            f"at travel {travel:.4f} m a tread node left out of the contact candidates penetrates the drum by "
+            f"{-outside.min() * 1e3:.3f} mm: the candidates' margin ({MARGIN * 1e3:.0f} mm) is too small for this run"
+        )
 
 
 def footprint_road_motion(tire: LoadedTire, state: StaticState, profile, travel: np.ndarray) -> np.ndarray:

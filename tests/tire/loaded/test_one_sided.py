@@ -111,6 +111,16 @@ def test_bad_input_is_refused_by_name(small_loaded, drum_case, drum_state):
 
     with pytest.raises(ValueError, match="tread nodes beyond 150 mm of the axle"):
         one_sided.quasi_static_run(tire, drum_state, plateau, (-0.1, 0.1))
+    contact = one_sided.cleat_contact(tire, drum_state, profile, np.zeros(1))
+    assert not np.isin(3 * contact.watched + 2, tire.fixed).any()  # the held bead stations are not watched
+    gap = np.ones(contact.watched.size)
+    gap[np.flatnonzero(contact.candidate)[0]] = -1e-3  # a candidate's own penetration: the contact solve's
+    one_sided.check_outside(contact, gap, 0.0)
+    gap[np.flatnonzero(~contact.candidate)[0]] = -1e-6  # any other node's: refused
+    with pytest.raises(RuntimeError, match="left out of the contact candidates penetrates the drum by 0.001 mm"):
+        one_sided.check_outside(contact, gap, 0.0)
+    # the time step's spacing: the footprint's rings along the drum (its 40 mm arcs: nodes ~20 mm apart)
+    assert 0.45 * 0.04 < one_sided._node_spacing(tire, drum_state) <= 0.5 * 0.04
     with pytest.raises(ValueError, match="already touches the tread"):
         one_sided.dynamic_runs(tire, drum_state, profile, SPEED, (-0.02, 0.1))
     with pytest.raises(ValueError, match="frozen"):
