@@ -72,7 +72,8 @@ def test_a_cleat_too_low_to_lift_a_node_gives_the_linear_footprint_s_static_tran
     static = small_loaded.fixed_hub_frfs(drum_case).H_points[:, 0].real
     linear = static @ motion
     assert np.abs(linear).max() > 0.1  # N: the check is not vacuous
-    assert np.abs(run.hub_force - linear).max() < 1e-4 * np.abs(linear).max()
+    # 2e-5: the road's motion along the normals taken as vertical (no 1 / n_z) would miss by 1.2e-4
+    assert np.abs(run.hub_force - linear).max() < 2e-5 * np.abs(linear).max()
 
 
 def test_the_frozen_run_is_the_frequency_domain_of_the_footprint_frfs(small_loaded, drum_case, dynamic):
