@@ -466,6 +466,13 @@ print(
     f"loaded FE, contact frozen, {conditions.dynamic_kmh:.0f} km/h, 0-250 Hz: peak {loaded_frozen.peak_difference:+.1%}, "
     f"RMS {loaded_frozen.rms_difference:.1%} against the frequency domain of its footprint FRFs"
 )
+loaded_runs = contact_tests["loaded FE"]
+print(
+    "loaded FE, quasi-static: the rim's reaction against the momentum balance, and the hub force off the cleat, "
+    f"{ru.analysis.format_small(loaded_runs.quasi_static.force_balance)} of the load; largest penetration out of "
+    f"contact {ru.analysis.format_small(loaded_runs.quasi_static.max_penetration, 1e-12)} m (30 km/h: "
+    f"{ru.analysis.format_small(loaded_runs.dynamic.max_penetration, 1e-12)} m)"
+)
 
 # %% [markdown]
 # About its loaded state the FE tire of the paper's kind lifts its tread off the drum beside the
