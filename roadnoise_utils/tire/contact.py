@@ -165,6 +165,12 @@ def time_steps(
     return dt, d0 + speed * dt * np.arange(n_steps)
 
 
+def check_frozen(frozen: tuple[bool, ...]) -> None:
+    """Refuse ``frozen`` unless it holds one or more booleans, one per run of a dynamic passage."""
+    if not frozen or not all(isinstance(f, bool | np.bool_) for f in frozen):
+        raise ValueError(f"frozen = {frozen!r}: give one or more booleans, one per run")
+
+
 def check_steps(n_steps: int, speed: float, distance: tuple[float, float], dt: float) -> None:
     """Refuse a run of more than :data:`MAX_STEPS` time steps (a speed too low for the time step)."""
     if n_steps > MAX_STEPS:

@@ -30,7 +30,7 @@ from threadpoolctl import threadpool_limits
 from ... import guards
 from ...road.cleat import point_heights
 from ..active_set import StepContact, held_contact
-from ..contact import ContactRun, time_steps
+from ..contact import ContactRun, check_frozen, time_steps
 from . import spec as cross_section
 from .contact import extended_grid, harmonic_flexibility, vertical_compliance
 from .static import SectionStaticState, SectionTire, check_contact_memory
@@ -166,8 +166,7 @@ def section_dynamic_runs(
     """
     speed = guards.real("speed", speed, 0.0, 100.0, lo_open=True, unit="m/s")
     _check_tire(tire, static)
-    if not frozen or not all(isinstance(f, bool | np.bool_) for f in frozen):
-        raise ValueError(f"frozen = {frozen!r}: give one or more booleans, one per run")
+    check_frozen(frozen)
     dt, travel = time_steps(tire.spec.mesh.contact_spacing, speed, distance, dt)
     n_steps, runs = travel.size, len(frozen)
     setup = _CleatSetup(tire, static, profile, travel)

@@ -43,7 +43,7 @@ from threadpoolctl import threadpool_limits
 from ... import guards
 from ...road.cleat import point_heights
 from ..active_set import StepContact, held_contact
-from ..contact import ContactRun, time_steps
+from ..contact import ContactRun, check_frozen, time_steps
 from ..cross_section.dynamics import Projected
 from ..cross_section.stepping import SPECTRAL_RADIUS, GeneralizedAlpha, StepGroup, SteppedHarmonic, passive_part
 from ..rubber import PronyBranches, prony_series
@@ -346,8 +346,7 @@ def dynamic_runs(
     spacing per step) from rest in the loaded state."""
     speed = guards.real("speed", speed, 0.0, 100.0, lo_open=True, unit="m/s")
     _check_state(state)
-    if not frozen or not all(isinstance(f, bool | np.bool_) for f in frozen):
-        raise ValueError(f"frozen = {frozen!r}: give one or more booleans, one per run")
+    check_frozen(frozen)
     dt, travel = time_steps(_node_spacing(tire, state), speed, distance, dt)
     contact = cleat_contact(tire, state, profile, travel)
     model = cleat_model(tire, state, contact)
