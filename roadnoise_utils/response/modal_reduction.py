@@ -377,15 +377,23 @@ class ModalReduction:
 def apply_identified_damping(
     eigenvalues: np.ndarray, hub_gain: np.ndarray, ident: ModeIdentification, frozen: str, f_band: float
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Give the identified loss factors to the modes seen in H_tot (matched in order of frequency)."""
+    """Give the identified loss factors to the modes seen in H_tot: each identified mode, in order of
+    frequency, to the nearest in frequency of the visible modes (hub gain above 1e-3 of the largest,
+    up to 1.1 times the band) not matched yet. Nearest, not the next in order: a visible mode that
+    H_tot's fit does not resolve (a weak structural mode below the air cavity's resonance) must not
+    take the loss factor of the one it does."""
     freqs = np.sqrt(eigenvalues.real) / (2 * np.pi)
     eta = eigenvalues.imag / eigenvalues.real
     source = np.full(eigenvalues.size, "frozen model", dtype=object)
     if frozen == "storage":
         eta = np.interp(freqs, ident.freqs, ident.loss_factor)  # the paper: no loss in FET70Hz
         source[:] = "interpolated"
-    visible = np.nonzero((np.abs(hub_gain) > 1e-3 * np.abs(hub_gain).max()) & (freqs <= 1.1 * f_band))[0]
-    for r, k in zip(visible, range(ident.freqs.size)):
+    visible = list(np.nonzero((np.abs(hub_gain) > 1e-3 * np.abs(hub_gain).max()) & (freqs <= 1.1 * f_band))[0])
+    for k in range(ident.freqs.size):
+        if not visible:
+            break
+        r = min(visible, key=lambda j: abs(freqs[j] - ident.freqs[k]))
+        visible.remove(r)
         eta[r] = ident.loss_factor[k]
         source[r] = "identified"
     return eigenvalues.real * (1 + 1j * eta), source

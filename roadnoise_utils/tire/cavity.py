@@ -376,3 +376,87 @@ def rolling_coupling(coupling: CavityCoupling, cavity: Cavity, flow_speed: float
         curvature=np.asarray(coupling.wall.T @ (stiffness0 @ phi)) / spacing,
     )
     return replace(coupling, flow=flow)
+
+
+@dataclass(frozen=True, eq=False)
+class AirCoordinates:
+    """The cavity's resonant modes as coordinates of their own, appended to a model's ``r`` coordinates.
+
+    Eliminating them gives back the low-rank term :math:`-V C(\\omega) V^T` of
+    :meth:`CavityCoupling.terms` (at rest): each resonant mode ``m`` is a mass
+    :math:`\\rho c^2/\\omega_m^2` on a spring :math:`\\rho c^2` driven by the volume change
+    :math:`V_m^T q`, and the uniform pressure a spring :math:`\\rho c^2 V_0 V_0^T` alone. The
+    elastic part of the mode's pressure amplitude is :math:`-\\rho c^2 (V_m^T q - s_m b_m)`, ``b_m``
+    its coordinate.
+
+    * ``causal=False`` (the FRFs' air): :math:`s_m = \\sqrt{1 + 2 i \\zeta}` and the spring
+      :math:`\\rho c^2 (1 + 2 i \\zeta)` on ``b_m``; eliminating ``b_m`` gives
+      :math:`c_m = \\rho c^2\\omega^2/(\\omega_m^2(1 + 2 i\\zeta) - \\omega^2)` exactly, at every
+      frequency (a constant complex stiffness: fit for a frequency-domain or frozen model; it has
+      a pole in the right half-plane and no causal impulse response).
+    * ``causal=True`` (for time stepping): :math:`s_m = 1`, lossless springs, and a dashpot
+      :math:`\\zeta\\rho c^2/(2\\omega_m)` on :math:`V_m^T q - 2 b_m`, which adds
+      :math:`\\zeta\\rho c^2/(2\\omega_m)(V_m^T\\dot q - 2\\dot b_m)` to the pressure's amplitude.
+      Eliminated,
+      :math:`c_m = \\rho c^2 (\\omega^2 - i\\zeta\\omega(\\omega_m^2 - \\omega^2)/(2\\omega_m)) / (\\omega_m^2 + 2i\\zeta\\omega_m\\omega - \\omega^2)`:
+      the hysteretic gain exactly at the mode's own frequency. Of the passive (symmetric,
+      positive) dashpots on the mode's two motions this is the one: on :math:`V_m^T q - b_m` the
+      gain at resonance is :math:`1 + 2i\\zeta` times the hysteretic one, on ``b_m`` alone
+      :math:`1 - 2i\\zeta` times, and no passive arrangement has the viscous oscillator's pure
+      :math:`\\omega^2` numerator. Below the resonance its loss is :math:`\\zeta\\omega_m/(2\\omega)` of the
+      air's inertia against the hysteretic :math:`2\\zeta` (alike at a quarter of the frequency).
+
+    Attributes
+    ----------
+    stiffness : ndarray (r + a, r + a)
+        The air's stiffness on the model's coordinates and its own (N/m in modal units; complex
+        unless ``causal``).
+    mass : ndarray (a,)
+        The resonant modes' masses.
+    damping : ndarray (r + a, r + a) or None
+        The dashpots (``causal`` only).
+    pressure, pressure_rate : ndarray (modes, r + a)
+        Each mode's pressure amplitude per coordinate and per coordinate velocity (zero unless
+        ``causal``), :math:`a = P [q; b] + P_v [\\dot q; \\dot b]` (the coupling's normalisation: the
+        force on the model's coordinates is :math:`V a`).
+    """
+
+    stiffness: np.ndarray
+    mass: np.ndarray
+    damping: np.ndarray | None
+    pressure: np.ndarray
+    pressure_rate: np.ndarray
+
+    @property
+    def size(self) -> int:
+        """How many coordinates the air adds."""
+        return self.mass.size
+
+
+def air_coordinates(coupling: CavityCoupling, causal: bool = False, lossless: bool = False) -> AirCoordinates:
+    """:class:`AirCoordinates` of the coupling's modes at rest (``lossless``: every mode undamped)."""
+    if coupling.rolling:
+        raise ValueError(
+            "coupling: the air's coordinates are those of the cavity at rest; valid couplings have no flow"
+        )
+    volume = np.asarray(coupling.volume)
+    rc2 = coupling.density * coupling.sound_speed**2
+    resonant = coupling.omegas > 0.0
+    omegas = coupling.omegas[resonant]
+    r, a = volume.shape[0], int(resonant.sum())
+    zeta = 0.0 if lossless else coupling.damping_ratio
+    scale = np.ones(a) if causal else np.full(a, np.sqrt(1.0 + 2j * zeta))
+    drive = np.vstack([volume[:, resonant], -np.diag(scale)])  # (r + a, a): V_m^T q - s_m b_m
+    uniform = np.vstack([volume[:, ~resonant], np.zeros((a, int((~resonant).sum())))])
+    stiffness = rc2 * (drive @ drive.T + uniform @ uniform.T)
+    pressure = np.zeros((volume.shape[1], r + a), float if causal else complex)
+    pressure[resonant] = -rc2 * drive.T
+    pressure[~resonant] = -rc2 * uniform.T
+    rate, damping = np.zeros((volume.shape[1], r + a)), None
+    if causal:
+        dashpot = np.vstack([volume[:, resonant], -2.0 * np.eye(a)])  # V_m^T q - 2 b_m
+        coefficient = zeta * rc2 / (2.0 * omegas)
+        damping = (dashpot * coefficient) @ dashpot.T
+        rate[resonant] = -coefficient[:, None] * dashpot.T
+    return AirCoordinates(stiffness=stiffness, mass=rc2 / omegas**2, damping=damping, pressure=pressure,
+                          pressure_rate=rate)  # fmt: skip

@@ -143,3 +143,20 @@ def test_the_mode_shapes_sign_does_not_depend_on_round_off(fet, flat):
     pair = np.zeros((shapes.shape[0], 1))
     pair[[3, 7]] = [[1.0], [-1.0]]  # an antisymmetric pair of equal magnitude: argmax of |v| is a tie
     assert _shape_signs(pair)[0] == -_shape_signs(-pair)[0]
+
+
+def test_identified_damping_goes_to_the_nearest_visible_mode():
+    """Modes visible at the hub at 82, 121 and 244 Hz; H_tot's fit resolves 80 and 242 Hz (the 121 Hz mode
+    too weak in it, the air's resonance strong): the identified loss factors go to 82 and 244 Hz, the
+    121 Hz mode keeps the frozen model's own; an invisible mode keeps its own too."""
+    from roadnoise_utils.response.modal_reduction import ModeIdentification, apply_identified_damping
+
+    freqs = np.array([40.0, 82.0, 121.0, 244.0])
+    eigenvalues = (2 * np.pi * freqs) ** 2 * (1 + 0.1j)
+    hub_gain = np.array([1e-6, 1.0, 0.5, 0.8])
+    ident = ModeIdentification(
+        np.array([80.0, 242.0]), np.array([0.2, 0.02]), np.full(2, np.nan), np.ones(2), (0j, 0j), (0.0, 250.0), 0.0
+    )
+    damped, source = apply_identified_damping(eigenvalues, hub_gain, ident, "complex", 250.0)
+    assert list(source) == ["frozen model", "identified", "frozen model", "identified"]
+    assert damped.imag / damped.real == pytest.approx([0.1, 0.2, 0.1, 0.02])

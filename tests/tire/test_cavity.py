@@ -188,3 +188,86 @@ def test_the_rolling_pressure_of_a_travelling_wall_wave_is_doppler_shifted(flow)
             rc2 = cav.density * cav.sound_speed**2
             exact = rc2 * shifted**2 * q / (cav.area * ((cav.sound_speed * order / radius) ** 2 - shifted**2))
             assert np.abs(p / exact - 1).max() < 1e-3
+
+
+# ---------------------------------------------------------------- the air's modes as coordinates of their own
+
+
+def _coupling(damping_ratio: float = 0.01) -> cavity.CavityCoupling:
+    """A random coupling: 7 coordinates, the uniform pressure and three resonant modes."""
+    volume = np.random.default_rng(3).standard_normal((7, 4)) * 1e-3
+    omegas = 2 * np.pi * np.array([0.0, 240.0, 246.0, 480.0])
+    return cavity.CavityCoupling(volume, omegas, 3.8, 345.0, damping_ratio, None, None, None)
+
+
+def _eliminated(coupling: cavity.CavityCoupling, air: cavity.AirCoordinates, omega: float) -> np.ndarray:
+    """The air's term on the model's coordinates, its own condensed out at ``omega`` (rad/s)."""
+    r = coupling.volume.shape[0]
+    d = air.stiffness.astype(complex)
+    d[r:, r:] -= omega**2 * np.diag(air.mass)
+    if air.damping is not None:
+        d = d + 1j * omega * air.damping
+    return d[:r, :r] - d[:r, r:] @ np.linalg.solve(d[r:, r:], d[r:, :r])
+
+
+@pytest.mark.parametrize("omega", [0.0, 2 * np.pi * 80.0, 2 * np.pi * 240.0, 2 * np.pi * 400.0, 2 * np.pi * 3000.0])
+def test_the_air_s_coordinates_eliminated_give_the_hysteretic_term_exactly(omega):
+    """Second method: the coupling's own term :math:`-V C(\\omega) V^T` (:meth:`CavityCoupling.terms`), to round-off."""
+    coupling = _coupling()
+    air = cavity.air_coordinates(coupling)
+    gains, volume = coupling.terms(omega)
+    expected = -coupling.volume @ gains @ volume.T
+    assert np.abs(_eliminated(coupling, air, omega) - expected).max() < 1e-12 * np.abs(expected).max()
+    assert air.damping is None and air.size == 3
+
+
+def test_the_causal_air_is_passive_and_has_the_hysteretic_gain_at_each_mode_s_own_frequency():
+    """Closed forms: eliminated, the causal coordinates give the gain of the docstring; at each resonant
+    mode's frequency (one mode alone) it equals the hysteretic gain; well below it, the air's inertia
+    :math:`\\rho c^2 \\omega^2/\\omega_m^2`. Its dashpots are positive semi-definite, its springs too."""
+    coupling = _coupling()
+    air = cavity.air_coordinates(coupling, causal=True)
+    assert np.linalg.eigvalsh(air.damping).min() > -1e-12 * np.abs(air.damping).max()
+    assert np.linalg.eigvalsh(air.stiffness).min() > -1e-9 * np.abs(air.stiffness).max()
+    rc2, zeta = coupling.density * coupling.sound_speed**2, coupling.damping_ratio
+    for m in (1, 2, 3):
+        alone = cavity.CavityCoupling(coupling.volume[:, [m]], coupling.omegas[[m]], 3.8, 345.0, zeta, None, None, None)
+        single = cavity.air_coordinates(alone, causal=True)
+        v, w_m = alone.volume, alone.omegas[0]
+        for omega in (0.3 * w_m, w_m, 1.7 * w_m):
+            gain = rc2 * (omega**2 - 1j * zeta * omega * (w_m**2 - omega**2) / (2 * w_m))
+            gain /= w_m**2 + 2j * zeta * w_m * omega - omega**2
+            assert np.allclose(_eliminated(alone, single, omega), -gain * v @ v.T, rtol=1e-12, atol=0)
+        hysteretic = -alone.volume @ np.diag(alone.gains(w_m)) @ alone.volume.T
+        assert np.allclose(_eliminated(alone, single, w_m), hysteretic, rtol=1e-12, atol=0)
+    low = 0.1 * coupling.omegas[1]  # the air's inertia, to (omega / omega_m)^2 = 1 %
+    inertia = -rc2 * low**2 * (coupling.volume[:, 1:] / coupling.omegas[1:] ** 2) @ coupling.volume[:, 1:].T
+    uniform = rc2 * np.outer(coupling.volume[:, 0], coupling.volume[:, 0])
+    dynamic = _eliminated(coupling, air, low).real - uniform
+    assert np.abs(dynamic - inertia).max() < 0.02 * np.abs(inertia).max()
+
+
+def test_the_air_s_pressures_push_the_model_as_its_stiffness_and_dashpots_do():
+    """Reciprocity: the force of the pressures on the model's coordinates, :math:`V a`, is minus the air's
+    stiffness and dashpots acting on any motion (the rows of the model's coordinates)."""
+    coupling = _coupling()
+    r = coupling.volume.shape[0]
+    air = cavity.air_coordinates(coupling, causal=True)
+    x, v = np.random.default_rng(4).standard_normal((2, r + air.size))
+    force = coupling.volume @ (air.pressure @ x + air.pressure_rate @ v)
+    assert np.allclose(force, -(air.stiffness @ x + air.damping @ v)[:r], rtol=1e-12, atol=1e-12 * np.abs(force).max())
+    hysteretic = cavity.air_coordinates(coupling)
+    assert np.allclose(coupling.volume @ (hysteretic.pressure @ x), -(hysteretic.stiffness @ x)[:r])
+    assert not hysteretic.pressure_rate.any()
+
+
+def test_lossless_air_and_streaming_air():
+    coupling = _coupling()
+    assert np.isrealobj(cavity.air_coordinates(coupling, lossless=True).stiffness.real)
+    assert np.abs(cavity.air_coordinates(coupling, lossless=True).stiffness.imag).max() == 0.0
+    assert not cavity.air_coordinates(coupling, causal=True, lossless=True).damping.any()
+    flow = cavity.RollingFlow(1.0, np.zeros((4, 4)), np.zeros((7, 4)), np.zeros((7, 4)))
+    from dataclasses import replace
+
+    with pytest.raises(ValueError, match="no flow"):
+        cavity.air_coordinates(replace(coupling, flow=flow))

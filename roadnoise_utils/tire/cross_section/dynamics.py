@@ -45,6 +45,7 @@ class Projected:
     contact: np.ndarray  # (k, d): basis values at the contact DOF
     momentum: np.ndarray  # (k,): vertical momentum per unit coordinate (kg), zero unless n = 1
     wall: np.ndarray | None = None  # (k,): the cavity wall's load (section_cavity.wall_volume), if in the basis
+    damping: np.ndarray | None = None  # (k, k): a viscous part (N s/m; the air's, stepped in time), if any
 
     @cached_property
     def _stacked(self) -> np.ndarray:
@@ -65,8 +66,9 @@ class Projected:
         """The same matrices on the orthonormal coordinates ``basis`` (k, k_new) of this basis."""
         compounds = {name: basis.T @ m @ basis for name, m in self.compounds.items()}
         wall = None if self.wall is None else basis.T @ self.wall
+        damping = None if self.damping is None else basis.T @ self.damping @ basis
         return Projected(compounds, basis.T @ self.gas @ basis, basis.T @ self.mass @ basis,
-                         basis.T @ self.contact, basis.T @ self.momentum, wall)  # fmt: skip
+                         basis.T @ self.contact, basis.T @ self.momentum, wall, damping)  # fmt: skip
 
 
 def parity_bases(mirror: np.ndarray) -> list[tuple[int, np.ndarray]]:

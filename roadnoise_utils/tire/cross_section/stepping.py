@@ -150,6 +150,7 @@ def passive_part(projected: Projected, names: list[str]) -> tuple[Projected, int
         mass=t.T @ projected.mass @ t,
         contact=t.T @ projected.contact,
         momentum=t.T @ projected.momentum,
+        damping=None if projected.damping is None else t.T @ projected.damping @ t,
     )
     return reduced, int((lam <= 0).sum())
 
@@ -205,7 +206,10 @@ class StepGroup:
 
     Each entry is a :class:`SteppedHarmonic` (a harmonic of the cross-section tire, or a whole
     reduced model stepped as one entry); the entries of harmonic ``n = 1`` are the ones whose
-    motion moves the centre of mass (:attr:`moving`).
+    motion moves the centre of mass (:attr:`moving`). An entry's viscous part (``damping``, the
+    air cavity's in the loaded tire) enters the generalised-alpha balance at the same weighted
+    instant as the stiffness, :math:`C[(1-\alpha_f)v_{n+1} + \alpha_f v_n]` (Chung & Hulbert
+    1993), its share at the step's start inside the force unbalance.
     """
 
     def __init__(
@@ -223,12 +227,18 @@ class StepGroup:
         self.contact = np.zeros((h_count, d, size))  # C
         self.static = np.zeros((h_count, size, size))  # inverse static stiffness
         self.momentum = np.zeros((h_count, size))  # vertical momentum per coordinate: n = 1 only
+        viscous = any(h.projected.damping is not None for h in harmonics)
+        self.damping = np.zeros((h_count, size, size)) if viscous else None  # C: the viscous parts, if any
+        velocity_weight = weight * scheme.gamma / (scheme.beta * dt)
         self.dropped: dict[int, int] = {}  # harmonic: directions of negative static stiffness left out
         for i, h in enumerate(harmonics):
             p, k = h.projected, h.projected.gas.shape[0]  # mass-orthonormal: M = I
             if h.dropped:
                 self.dropped[h.n] = self.dropped.get(h.n, 0) + h.dropped
             a = inertia * np.eye(k) + weight * (p.gas + sum(branches[c].factor * p.compounds[c] for c in names))
+            if p.damping is not None:
+                a = a + velocity_weight * p.damping
+                self.damping[i, :k, :k] = p.damping
             a_inv = np.linalg.inv(0.5 * (a + a.T))
             blocks = [a_inv] + [weight * (a_inv @ p.compounds[c]) for c in names]
             for b, block in enumerate(blocks):
@@ -268,6 +278,13 @@ class StepGroup:
         ahead = self.q + dt * self.velocity + (0.5 - scheme.beta) * dt**2 * self.acceleration
         size = self.size
         self.stacked[:, :size] = inertia * ahead - scheme.alpha_m * self.acceleration + scheme.alpha_f * self.unbalance
+        if self.damping is not None:  # (1 - af) C v_{n+1}: its part known before the step
+            known = (
+                scheme.gamma / (scheme.beta * dt) * ahead
+                - self.velocity
+                - (1.0 - scheme.gamma) * dt * self.acceleration
+            )
+            self.stacked[:, :size] += (1.0 - scheme.alpha_f) * np.matmul(self.damping, known)
         for b, c in enumerate(self.names, start=1):
             self.stacked[:, b * size : (b + 1) * size] = self.history[c].reshape(self.q.shape)
         return np.matmul(self.operator, self.stacked)

@@ -40,15 +40,18 @@ against the surface's (tested: without the rim it would be 2.5 times off on the 
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import scipy.sparse as sp
 
-from ..cavity import Cavity, CavityCoupling, webster_modes
+from ..cavity import AirCoordinates, Cavity, CavityCoupling, air_coordinates, webster_modes
 from ..cross_section.cavity import section_cavity
 from ..cross_section.spec import CrossSectionSpec
 from ..cross_section.static import build_section_tire
 from ..cross_section.waveguide import surface_points
 from . import pressure
+from .dynamics import ReducedFootprint
 from .statics import LoadedTire, StaticState
 
 #: Equal angles round the wheel the Webster area is given at (as the cross-section tire's).
@@ -147,3 +150,32 @@ def loaded_coupling(tire: LoadedTire, state: StaticState, temperature: float | N
     omegas = 2.0 * np.pi * modes.freqs
     omegas[0] = 0.0  # the uniform pressure
     return CavityCoupling(volume, omegas, air.density, air.sound_speed, settings.damping_ratio, modes, wall, area)
+
+
+def with_air_coordinates(reduced: ReducedFootprint, lossless: bool = False) -> tuple[ReducedFootprint, AirCoordinates]:
+    """The reduced tire with its air cavity's resonant modes as interior coordinates of their own, appended
+    last (:func:`roadnoise_utils.tire.cavity.air_coordinates`, the FRFs' hysteretic air: exactly the
+    reduced tire with the air's term :math:`-V C(\\omega) V^T`; ``lossless``: undamped air, for the
+    modal reduction's storage moduli): their masses join ``mass``, their stiffness ``air``."""
+    if reduced.cavity is None:
+        raise ValueError("reduced: give a reduction with its air cavity coupled (dynamics.reduce(..., cavity=))")
+    air = air_coordinates(reduced.cavity, causal=False, lossless=lossless)
+    r = reduced.mass.shape[0]
+
+    def padded(matrix: np.ndarray) -> np.ndarray:
+        return np.pad(matrix, ((0, air.size), (0, air.size)))
+
+    mass = padded(reduced.mass)
+    mass[r:, r:] = np.diag(air.mass)
+    augmented = replace(
+        reduced,
+        compounds={name: padded(part) for name, part in reduced.compounds.items()},
+        pneumatic=padded(reduced.pneumatic),
+        mass=mass,
+        curvature=padded(reduced.curvature),
+        basis=None if reduced.basis is None else np.pad(reduced.basis, ((0, 0), (0, air.size))),
+        cavity=None,
+        air=air.stiffness,
+        n_air=air.size,
+    )
+    return augmented, air

@@ -269,6 +269,12 @@ class ReducedFootprint:
     cavity : CavityCoupling or None
         The air cavity coupled to the reduced coordinates (its modes' volume changes projected on
         the basis, ``volume`` (r, modes); ``wall`` not kept); None: no air.
+    air : ndarray (r, r) or None
+        The air's stiffness where its modes are coordinates of the model, the last ones
+        (:func:`roadnoise_utils.tire.loaded.cavity.with_air_coordinates`: their masses in ``mass``,
+        ``cavity`` then None); frequency-independent.
+    n_air : int
+        How many of the last coordinates are the air's (0 without ``air``).
     """
 
     compounds: dict
@@ -282,13 +288,16 @@ class ReducedFootprint:
     basis: np.ndarray | None = None
     mode_harmonic: np.ndarray | None = None
     cavity: CavityCoupling | None = None
+    air: np.ndarray | None = None
+    n_air: int = 0
 
     def stiffness(self, omega: float) -> np.ndarray:
-        """:math:`\\sum_c g_c K_c + g_p K_p` and the curvature term at ``omega`` (rad/s), reduced, complex
-        (N/m): the dynamic stiffness without its inertia."""
+        """:math:`\\sum_c g_c K_c + g_p K_p`, the curvature term and the air's coordinates' stiffness at ``omega``
+        (rad/s), reduced, complex (N/m): the dynamic stiffness without its inertia."""
         weights = _weights(self.laws, self.pneumatic_law, list(self.compounds), omega)
         parts = [self.pneumatic, *self.compounds.values(), self.curvature]
-        return sum(w * part for w, part in zip(np.delete(weights, -2), parts))
+        out = sum(w * part for w, part in zip(np.delete(weights, -2), parts))
+        return out if self.air is None else out + self.air
 
     def hub_stiffness(self, omega: float) -> np.ndarray:
         """The hub's row of the boundary's condensed dynamic stiffness at ``omega`` (rad/s), (n_boundary,) complex.
@@ -302,6 +311,8 @@ class ReducedFootprint:
         weights = _weights(self.laws, self.pneumatic_law, list(self.compounds), omega)
         parts = [self.pneumatic, *self.compounds.values(), self.mass, self.curvature]
         d = sum(w * part for w, part in zip(weights, parts))
+        if self.air is not None:
+            d = d + self.air
         if self.cavity is not None:
             gains, volume = self.cavity.terms(omega)
             d = d - self.cavity.volume @ gains @ volume.T

@@ -40,6 +40,7 @@ import scipy.linalg as sla
 from ...response.modal_reduction import ANCHORS, ModalModel, ModalReduction, identified_start, modal_damping
 from ..cross_section.dynamics import frozen_laws
 from ..model import FRFResult
+from .cavity import with_air_coordinates
 from .dynamics import ReducedFootprint
 
 #: Loaded modes are kept below ``MODE_FACTOR`` times the band (the other models': accurate to twice the band).
@@ -104,6 +105,10 @@ def loaded_modes(reduced: ReducedFootprint, laws: dict, f_keep: float) -> Loaded
     residual_mass = m[:b, b - 1] - mass_gain @ mass_gain[-1] + inertia  # every mode's m, the dropped ones' alpha
     harmonic = reduced.mode_harmonic[np.argmax(np.abs(shapes[: reduced.n_modes, kept]), axis=0)]
     rank = np.array([np.count_nonzero(harmonic[:j] == h) for j, h in enumerate(harmonic)], int)
+    if reduced.n_air:
+        air = air_modes(shapes[:, kept], np.diag(m)[-reduced.n_air :], reduced.n_air)
+        harmonic = np.where(air >= 0, air, harmonic)
+        rank = np.where(air >= 0, -1, rank)
     return LoadedModes(
         eigenvalues=values[kept],
         hub_gain=alpha[-1, kept],
@@ -113,6 +118,17 @@ def loaded_modes(reduced: ReducedFootprint, laws: dict, f_keep: float) -> Loaded
         harmonic=harmonic,
         order=rank,
     )
+
+
+def air_modes(shapes: np.ndarray, air_mass: np.ndarray, n_air: int) -> np.ndarray:
+    """The plane-wave order of each mode whose kinetic energy lies mostly in the air's coordinates (the last
+    ``n_air`` of ``shapes``, whose masses are ``air_mass``), -1 for the others. The air's coordinates are
+    its resonant modes in ascending order, a doublet per order (:func:`.cavity.with_air_coordinates`)."""
+    weights = np.abs(shapes) ** 2
+    air = weights[-n_air:] * air_mass[:, None]
+    share = air.sum(axis=0) / (air.sum(axis=0) + weights[:-n_air].sum(axis=0))  # the tire's coordinates: M ~ I
+    order = np.argmax(air, axis=0) // 2 + 1
+    return np.where(share > 0.5, order, -1)
 
 
 def quasi_static_anchors(reduced: ReducedFootprint, anchor_freqs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -179,7 +195,10 @@ def loaded_modal_reduction(
     Parameters
     ----------
     reduced : ReducedFootprint
-        The loaded tire's reduction with its modes' wave numbers, for at least ``anchors[-1] * f_band`` Hz.
+        The loaded tire's reduction with its modes' wave numbers, for at least ``anchors[-1] * f_band`` Hz;
+        with its air cavity coupled, the air's modes become coordinates of their own
+        (:func:`.cavity.with_air_coordinates`) and the loaded modes are the tire's and the air's
+        together (an air mode's ``lateral_order`` is -1, its ``wave_number`` its plane wave's order).
     membership : ndarray (n_tasselli, P)
         Which contact nodes each tassello holds (:meth:`~roadnoise_utils.tire.tasselli.Tasselli.membership`).
     visco : FRFResult
@@ -190,6 +209,8 @@ def loaded_modal_reduction(
     ident, reference_frequency, anchor_freqs = identified_start(
         visco, frozen, damping, f_band, anchors, reference_frequency
     )
+    if reduced.cavity is not None:  # the air's modes join the loaded modes (lossless with the storage moduli)
+        reduced, _ = with_air_coordinates(reduced, lossless=frozen == "storage")
     model, modes = modal_model(
         reduced,
         membership,

@@ -175,21 +175,23 @@ def round_stiffness(spec: LoadedSpec, load: float) -> float:
 def reduced_footprint(spec: LoadedSpec, case: LoadCase, f_max: float) -> dynamics.ReducedFootprint:
     """Cached: the tire linearised about :func:`loaded_state` and reduced for 0-``f_max`` Hz
     (:func:`.dynamics.reduce`), its held modes at rest labelled with their wave numbers
-    (:func:`.modal.harmonic_of_modes`); the basis itself is not kept. The tire without its air
-    (:func:`without_air`): the paper's modal reduction reduces the tire alone."""
+    (:func:`.modal.harmonic_of_modes`); the basis itself is not kept. With the construction's
+    ``[cavity] enabled``, the air of the loaded cavity coupled (:func:`.cavity.loaded_coupling`)."""
     f_max = guards.real("f_max", f_max, lo=0.0, lo_open=True, unit="Hz")
-    spec = without_air(spec)
+    spec = spec if spec.construction.cavity.enabled else without_air(spec)
     state = loaded_state(spec, case)
 
     def compute() -> dynamics.ReducedFootprint:
         tire = built_tire(spec)
-        reduced = dynamics.reduce(dynamics.linearise(tire, state), f_max, keep_basis=True)
+        air = cavity.loaded_coupling(tire, state) if spec.construction.cavity.enabled else None
+        reduced = dynamics.reduce(dynamics.linearise(tire, state), f_max, keep_basis=True, cavity=air)
         held = reduced.basis[:, reduced.n_boundary : reduced.n_boundary + reduced.n_modes]
         harmonic = modal.harmonic_of_modes(tire.mesh.theta, held)
         return replace(reduced, basis=None, mode_harmonic=harmonic)
 
     inputs = {"tire": spec, **case.key(), "f_max": f_max}
-    return cached(reduced_footprint, inputs, compute, runs=(dynamics, modal.harmonic_of_modes, loading, statics))
+    runs = (cavity, dynamics, modal.harmonic_of_modes, loading, statics)
+    return cached(reduced_footprint, inputs, compute, runs=runs)
 
 
 def loaded_modal(
@@ -202,9 +204,8 @@ def loaded_modal(
 ) -> ModalReduction:
     """Cached :func:`.modal.loaded_modal_reduction` about :func:`loaded_state`, identified on
     :func:`loaded_frfs` (0-400 Hz) and returning its FRFs at those frequencies; a freezing, damping
-    or band it does not have is refused before any stage runs, and so is a tire whose file couples
-    its air (its loaded modes are the tire's without it)."""
-    spec.construction.cavity.refuse_in("loaded_modal")
+    or band it does not have is refused before any stage runs. A tire whose file couples its air gets
+    the air's modes among its loaded modes (:func:`.modal.loaded_modal_reduction`)."""
     check_options(frozen, damping, f_band)
     options = {"frozen": frozen, "damping": damping, "reference_frequency": reference_frequency, "f_band": f_band}
     visco = loaded_frfs(spec, case)
@@ -215,45 +216,55 @@ def loaded_modal(
         return modal.loaded_modal_reduction(reduced_footprint(spec, case, f_top), membership, visco, **options)
 
     inputs = {"tire": spec, **case.key(), **options}
-    return cached(loaded_modal, inputs, compute, runs=(modal, dynamics, loading, statics))
+    return cached(loaded_modal, inputs, compute, runs=(modal, cavity, dynamics, loading, statics))
 
 
 def _cleat_inputs(spec: LoadedSpec, case: LoadCase, height: float, base: float, shape: str, distance) -> dict:
-    """A cleat passage's key: the tire without its air, the drum's case, the cleat (m) and the travel (m)."""
-    spec.construction.cavity.refuse_in("one_sided_run")
+    """A cleat passage's key: the tire (its air's settings where its file couples the air), the drum's case,
+    the cleat (m) and the travel (m)."""
     return {
-        "tire": without_air(spec), **case.key(), "height": float(height), "base": float(base), "shape": shape,
-        "distance": tuple(float(d) for d in distance),
+        "tire": spec if spec.construction.cavity.enabled else without_air(spec), **case.key(),
+        "height": float(height), "base": float(base), "shape": shape, "distance": tuple(float(d) for d in distance),
     }  # fmt: skip
+
+
+def _air(spec: LoadedSpec, tire: LoadedTire, state: StaticState):
+    """The loaded state's air cavity where the tire file couples it (:func:`.cavity.loaded_coupling`), else None."""
+    return cavity.loaded_coupling(tire, state) if spec.construction.cavity.enabled else None
 
 
 def quasi_static_cleat(
     spec: LoadedSpec, case: LoadCase, height: float, base: float, shape: str, distance, step: float = 1.0e-3
 ) -> ContactRun:
     """Cached :func:`.one_sided.quasi_static_run` of a cleat (m) over the tire loaded on the case's drum
-    (:func:`loaded_state`), solved every ``step`` m of travel; refused with the air coupled."""
+    (:func:`loaded_state`), solved every ``step`` m of travel, with the air where the file couples it."""
     inputs = {**_cleat_inputs(spec, case, height, base, shape, distance), "step": float(step)}
     state = loaded_state(spec, case)
 
     def compute() -> ContactRun:
-        profile = cleat_profile(height, base, shape)
-        return one_sided.quasi_static_run(built_tire(spec), state, profile, inputs["distance"], inputs["step"])
+        profile, tire = cleat_profile(height, base, shape), built_tire(spec)
+        air = _air(spec, tire, state)
+        return one_sided.quasi_static_run(tire, state, profile, inputs["distance"], inputs["step"], air=air)
 
-    return cached(quasi_static_cleat, inputs, compute, runs=(one_sided, dynamics, loading, road_contact, statics))
+    runs = (one_sided, cavity, dynamics, loading, road_contact, statics)
+    return cached(quasi_static_cleat, inputs, compute, runs=runs)
 
 
 def dynamic_cleat_runs(
     spec: LoadedSpec, case: LoadCase, speed: float, height: float, base: float, shape: str, distance, dt=None
 ) -> tuple[ContactRun, ContactRun]:
     """Cached :func:`.one_sided.dynamic_runs` at ``speed`` (m/s) over the tire loaded on the case's drum:
-    (one-sided contact, frozen contact), stepped together every ``dt`` s; refused with the air coupled."""
+    (one-sided contact, frozen contact), stepped together every ``dt`` s, with the air where the file
+    couples it."""
     options = {"speed": float(speed), "dt": None if dt is None else float(dt)}
     inputs = {**_cleat_inputs(spec, case, height, base, shape, distance), **options}
     state = loaded_state(spec, case)
 
     def compute() -> tuple[ContactRun, ContactRun]:
-        profile = cleat_profile(height, base, shape)
-        runs = one_sided.dynamic_runs(built_tire(spec), state, profile, speed, inputs["distance"], dt, (False, True))
+        profile, tire = cleat_profile(height, base, shape), built_tire(spec)
+        air = _air(spec, tire, state)
+        runs = one_sided.dynamic_runs(tire, state, profile, speed, inputs["distance"], dt, (False, True), air=air)
         return tuple(runs)
 
-    return cached(dynamic_cleat_runs, inputs, compute, runs=(one_sided, dynamics, loading, road_contact, statics))
+    runs = (one_sided, cavity, dynamics, loading, road_contact, statics)
+    return cached(dynamic_cleat_runs, inputs, compute, runs=runs)

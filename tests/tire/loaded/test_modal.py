@@ -15,6 +15,7 @@ import pytest
 from roadnoise_utils.response.modal_reduction import ModalReduction
 from roadnoise_utils.tire.cross_section.dynamics import frozen_laws
 from roadnoise_utils.tire.loaded import modal, stages
+from roadnoise_utils.tire.loaded.cavity import with_air_coordinates
 
 
 @pytest.fixture(scope="module")
@@ -103,3 +104,52 @@ def test_a_bad_option_is_refused_before_any_stage_runs(small_loaded, monkeypatch
     monkeypatch.setattr(stages, "loaded_frfs", lambda *a, **k: pytest.fail("a stage ran before the check"))
     with pytest.raises(ValueError, match=message):
         small_loaded.modal_reduction(small_loaded.case(), **options)
+
+
+@pytest.fixture(scope="module")
+def with_air(small_loaded):
+    """The test tire with its air cavity coupled."""
+    return small_loaded.replace(**{"cavity.enabled": True})
+
+
+@pytest.mark.parametrize("frozen", ["complex", "storage"])
+def test_with_its_air_the_modal_model_is_the_coupled_direct_solve(with_air, membership, frozen):
+    """Second method: the reduced tire with the air's term :math:`-V C(\\omega) V^T` solved directly
+    (the FRFs' route), against the modal model whose loaded modes are the tire's and the air's together
+    (:func:`.cavity.with_air_coordinates`), frozen at every frequency, every mode kept: to round-off. The
+    air's loaded doublet is among the modes, labelled as the air's first order, at the frequencies of
+    the loaded cavity's Webster doublet within 5 Hz (the tire's wall moves with it)."""
+    reduced = stages.reduced_footprint(with_air.spec, with_air.case(), 400.0)
+    laws = frozen_laws(reduced.laws, 2 * np.pi * 80.0, storage_only=frozen == "storage")
+    frozen_tire = replace(reduced, laws=laws)
+    if frozen == "storage":
+        frozen_tire = replace(frozen_tire, cavity=replace(reduced.cavity, damping_ratio=0.0))
+    augmented, air = with_air_coordinates(frozen_tire, lossless=frozen == "storage")
+    freqs = np.array([0.0, 81.5, 163.0, 240.0, 245.0, 399.0])
+    model, modes = modal.modal_model(augmented, membership, 80.0, frozen, np.inf, np.array([0.0, 100.0, 400.0]))
+    frf = model.frf(freqs)
+    direct = _direct(frozen_tire, freqs)
+    scale = np.abs(direct).max()
+    assert np.abs(frf.H_points.T - direct[:, :-1]).max() < 1e-8 * scale
+    assert np.abs(frf.G_H - direct[:, -1]).max() < 1e-8 * scale
+    assert modes.eigenvalues.size == reduced.mass.shape[0] - reduced.n_boundary + air.size
+    doublet = np.sqrt(modes.eigenvalues[(modes.order == -1) & (modes.harmonic == 1)].real) / (2 * np.pi)
+    webster = reduced.cavity.modes.freqs[1:3]
+    assert doublet.size == 2 and np.abs(np.sort(doublet) - np.sort(webster)).max() < 5.0
+
+
+def test_with_its_air_the_model_s_reduction_gives_the_air_mode_its_identified_damping(with_air):
+    """The model's reduction of the tire with its air: H_tot's fit resolves the air's resonance, whose
+    loss factor goes to the air's mode nearest it (not to the next structural mode visible at the hub);
+    exact at rest (the anchors: the static solve with the air's compressibility)."""
+    case = with_air.case()
+    reduction = with_air.modal_reduction(case)
+    direct = with_air.fixed_hub_frfs(case)
+    ident = reduction.identification.freqs
+    air = ident[(ident > 200.0) & (ident < 260.0)]
+    assert air.size == 1
+    table = reduction.mode_table()
+    chosen = table[table["damping from"] == "identified"]
+    nearest = chosen.iloc[np.argmin(np.abs(chosen["frequency (Hz)"] - air[0]))]
+    assert nearest["m"] == -1 and abs(nearest["frequency (Hz)"] - air[0]) < 5.0
+    assert np.abs(reduction.frf.H_tot[0] - direct.H_tot[0]) < 1e-9 * np.abs(direct.H_tot[0])
