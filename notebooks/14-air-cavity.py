@@ -271,10 +271,12 @@ for quantity in ("vertical stiffness", "first vertical resonance", "first vertic
 assert calibration["with"]["ok"].all()
 
 # %% [markdown]
-# Every target still holds, so the tire needs no new parameters for the cavity. Not yet with the cavity:
-# the FE stages that step or reduce the tire itself (the one-sided contact runs, the modal
-# reduction, the FE cleat reference refuse a tire with the cavity, naming the stage), and the
-# rolling cavity in the cross-section tire's FRFs (its rolling doublet is above).
+# Every target still holds, so the tire needs no new parameters for the cavity. Not yet with the cavity
+# on these two tires: the FE stages that step or reduce the tire itself (the one-sided contact runs,
+# the modal reduction, the FE cleat reference refuse a tire with the cavity, naming the stage), and
+# the rolling cavity in the cross-section tire's FRFs (its rolling doublet is above). The loaded FE
+# tire of notebook 16 carries its air into those stages too: its air's modes become coordinates of
+# their own, stepped in time in a causal form and among its loaded modes in the modal reduction.
 #
 # ## 5. Paper vs ours
 #

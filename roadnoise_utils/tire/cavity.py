@@ -42,8 +42,10 @@ tire's dynamic stiffness that the fixed-hub FRFs take in (:func:`roadnoise_utils
 ``[cavity] enabled`` is on. :func:`rolling_modes` gives the doublet of the rolling tire and
 :func:`rolling_coupling` puts the rolling air into the FRFs (the convected waveguide, the tire's
 structure at rest). The cross-section tire's cavity is :mod:`roadnoise_utils.tire.cross_section.cavity` and
-:mod:`roadnoise_utils.tire.cross_section.cavity_frf` (at rest). Not yet: the cavity in the FE stages that step or
-reduce the tire.
+:mod:`roadnoise_utils.tire.cross_section.cavity_frf` (at rest). :func:`air_coordinates` makes the modes
+coordinates of their own, which the loaded FE tire's modal reduction and one-sided cleat runs step
+or reduce with the tire; the ring and the cross-section tires' FE stages that step or reduce the
+tire refuse the cavity.
 
 **Limits found so far (a review of the physics):**
 
