@@ -377,26 +377,44 @@ class ModalReduction:
 def apply_identified_damping(
     eigenvalues: np.ndarray, hub_gain: np.ndarray, ident: ModeIdentification, frozen: str, f_band: float
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Give the identified loss factors to the modes seen in H_tot: each identified mode, in order of
-    frequency, to the nearest in frequency of the visible modes (hub gain above 1e-3 of the largest,
-    up to 1.1 times the band) not matched yet. Nearest, not the next in order: a visible mode that
-    H_tot's fit does not resolve (a weak structural mode below the air cavity's resonance) must not
-    take the loss factor of the one it does."""
+    """Give the identified loss factors to the modes seen in H_tot: the visible modes (hub gain above 1e-3
+    of the largest, up to 1.1 times the band), matched to the identified ones in order of frequency
+    with the least total distance in frequency (:func:`matched_in_order`). Not simply the next in
+    order: a visible mode that H_tot's fit does not resolve (a weak structural mode below the air
+    cavity's resonance) must not take the loss factor of the one it does."""
     freqs = np.sqrt(eigenvalues.real) / (2 * np.pi)
     eta = eigenvalues.imag / eigenvalues.real
     source = np.full(eigenvalues.size, "frozen model", dtype=object)
     if frozen == "storage":
         eta = np.interp(freqs, ident.freqs, ident.loss_factor)  # the paper: no loss in FET70Hz
         source[:] = "interpolated"
-    visible = list(np.nonzero((np.abs(hub_gain) > 1e-3 * np.abs(hub_gain).max()) & (freqs <= 1.1 * f_band))[0])
-    for k in range(ident.freqs.size):
-        if not visible:
-            break
-        r = min(visible, key=lambda j: abs(freqs[j] - ident.freqs[k]))
-        visible.remove(r)
-        eta[r] = ident.loss_factor[k]
-        source[r] = "identified"
+    visible = np.nonzero((np.abs(hub_gain) > 1e-3 * np.abs(hub_gain).max()) & (freqs <= 1.1 * f_band))[0]
+    for k, j in matched_in_order(ident.freqs, freqs[visible]):
+        eta[visible[j]] = ident.loss_factor[k]
+        source[visible[j]] = "identified"
     return eigenvalues.real * (1 + 1j * eta), source
+
+
+def matched_in_order(identified: np.ndarray, visible: np.ndarray) -> list[tuple[int, int]]:
+    """Pairs ``(k, j)``, as many as the shorter list has: identified frequency ``k`` (Hz, ascending) matched
+    to a distinct visible one ``j`` (ascending), the order kept and the sum of :math:`|f_k - f_j|`
+    least (dynamic programming over the two sorted lists; the longer list's extra entries left out)."""
+    if identified.size > visible.size:
+        return [(k, j) for j, k in matched_in_order(visible, identified)]
+    n_i, n_v = identified.size, visible.size
+    cost = np.full((n_i + 1, n_v + 1), np.inf)
+    cost[0, :] = 0.0
+    for k in range(1, n_i + 1):
+        for j in range(k, n_v + 1):  # the k-th identified to the j-th visible, or the j-th left out
+            cost[k, j] = min(cost[k, j - 1], cost[k - 1, j - 1] + abs(identified[k - 1] - visible[j - 1]))
+    pairs, k, j = [], n_i, n_v
+    while k > 0:
+        if j > k and cost[k, j] == cost[k, j - 1]:
+            j -= 1
+        else:
+            pairs.append((k - 1, j - 1))
+            k, j = k - 1, j - 1
+    return pairs[::-1]
 
 
 def modal_damping(

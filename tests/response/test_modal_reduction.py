@@ -160,3 +160,14 @@ def test_identified_damping_goes_to_the_nearest_visible_mode():
     damped, source = apply_identified_damping(eigenvalues, hub_gain, ident, "complex", 250.0)
     assert list(source) == ["frozen model", "identified", "frozen model", "identified"]
     assert damped.imag / damped.real == pytest.approx([0.1, 0.2, 0.1, 0.02])
+
+
+def test_identified_and_visible_modes_are_matched_in_order_with_the_least_distance():
+    """Closed cases: matched greedily, 100 Hz would take 106 Hz and leave 110 Hz the 90 Hz mode (26 Hz
+    in all); in order the two cost 14 Hz. The longer list's extra entries are left out, either side."""
+    from roadnoise_utils.response.modal_reduction import matched_in_order
+
+    assert matched_in_order(np.array([100.0, 110.0]), np.array([90.0, 106.0])) == [(0, 0), (1, 1)]
+    assert matched_in_order(np.array([80.0, 242.0]), np.array([82.0, 121.0, 244.0])) == [(0, 0), (1, 2)]
+    assert matched_in_order(np.array([80.0, 100.0, 120.0]), np.array([79.0, 119.0])) == [(0, 0), (2, 1)]
+    assert matched_in_order(np.array([]), np.array([81.0])) == []
