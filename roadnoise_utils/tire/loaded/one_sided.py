@@ -360,14 +360,9 @@ def cleat_model(
         gas = gas + held(reduced.pneumatic)
     else:
         compounds[lin.pneumatic_law] = compounds[lin.pneumatic_law] + held(reduced.pneumatic)
-    other = contact.watched[~contact.candidate]
-    n = contact.normals[~contact.candidate]
-    watch = np.zeros((contact.watched.size, keep.size))
-    watch[contact.candidate] = basis[lin.road]
-    watch[~contact.candidate] = n[:, :1] * basis[3 * other] + n[:, 1:] * basis[3 * other + 2]
-    # the watched motions and the curvature's vertical share ride along as contact columns through the rotation
+    # the watched motions and the hub force's rows ride along as contact columns through the rotation
     hub_rows = np.stack([basis.T @ (lin.curvature @ e), air_force, air_rate], axis=1)
-    columns = np.hstack([basis[lin.road].T, watch.T, hub_rows])
+    columns = np.hstack([basis[lin.road].T, watched_motions(contact, basis, lin.road).T, hub_rows])
     projected = Projected(compounds, gas, mass, columns, basis.T @ (lin.mass @ e), damping=damping)
     passive, dropped = passive_part(projected, list(compounds))
     if dropped:
@@ -379,6 +374,17 @@ def cleat_model(
     passive = replace(passive, contact=rotated[:, :n_road])
     entry = SteppedHarmonic(1, passive, reduced.n_modes, dropped)  # n = 1: its momentum counts
     return CleatModel(entry, rotated[:, n_road:-3].T, rotated[:, -3], lin.laws, rotated[:, -2], rotated[:, -1])
+
+
+def watched_motions(contact: CleatContact, basis: np.ndarray, road: np.ndarray) -> np.ndarray:
+    """Each watched node's motion along the drum's normal through it per coordinate of ``basis`` (W, k): the
+    candidates' road DOF (``road``, their normal in the contact's frame), the others' global ``x`` and ``z``."""
+    other = contact.watched[~contact.candidate]
+    n = contact.normals[~contact.candidate]
+    watch = np.zeros((contact.watched.size, basis.shape[1]))
+    watch[contact.candidate] = basis[road]
+    watch[~contact.candidate] = n[:, :1] * basis[3 * other] + n[:, 1:] * basis[3 * other + 2]
+    return watch
 
 
 def dynamic_runs(
