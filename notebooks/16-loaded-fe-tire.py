@@ -500,13 +500,13 @@ print(
 # spring driven by the mode's volume change (`air_coordinates` in `tire/cavity.py`), stepped with
 # the tire. The FRFs' air loses a fixed fraction $2\zeta$ per cycle at every frequency, a law with
 # no causal impulse response; the stepped air has springs and dashpots arranged to give each
-# mode's gain exactly at the mode's own frequency, and the two forms of $H_{tot}$ stay within
-# 1 % of its peak over the band. Its hub force gains the air's push on the wheel: seen from the
-# fixed angles round the axle, a translation of the wheel shifts the cavity's section, so each
-# mode's pressure pushes the wheel by the volume that translation moves. The air's resonances,
-# damped by 1 % alone, lie at the band's top, so these runs take half the step (1/24 000 s);
-# held bilateral, they match the frequency domain of the FRFs with the air
-# (`tests/tire/loaded/test_one_sided.py`).
+# mode's gain exactly at the mode's own frequency, and the two forms of $H_{tot}$ stay close over
+# the band (the numbers are on the FE-tire page of the book). Its hub force gains the air's push
+# on the wheel: seen from the fixed angles round the axle, a translation of the wheel shifts the
+# cavity's section, so each mode's pressure pushes the wheel by the volume that translation
+# moves. The air's resonances, lightly damped by the air alone, lie at the band's top, so these
+# runs take half the model's step without its air; held bilateral, they match the frequency
+# domain of the FRFs with the air (`tests/tire/loaded/test_one_sided.py`).
 
 # %%
 # NBVAL_IGNORE_OUTPUT
