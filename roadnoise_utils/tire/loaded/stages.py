@@ -36,6 +36,7 @@ from ... import guards
 from ...repro.cache import cached
 from ...response.modal_reduction import ModalReduction, check_options
 from ...road.cleat import cleat_profile
+from ..cavity import CavityCoupling
 from ..contact import ContactRun
 from ..model import DEFAULT_FREQS, Footprint, FRFResult, LoadCase
 from ..schema import NO_CAVITY
@@ -58,6 +59,18 @@ def without_air(spec: LoadedSpec) -> LoadedSpec:
     is the file's operating pressure), so a tire with its air cavity on shares the static states of
     the same tire without it."""
     return replace(spec, construction=replace(spec.construction, cavity=NO_CAVITY))
+
+
+def with_its_air(spec: LoadedSpec) -> LoadedSpec:
+    """The tire file as a dynamic stage's key reads it: with its ``[cavity]`` settings where it couples its
+    air, without them (:func:`without_air`) where it does not, so that a tire without its air has one
+    cached result for every ``[cavity]`` setting."""
+    return spec if spec.construction.cavity.enabled else without_air(spec)
+
+
+def loaded_air(spec: LoadedSpec, tire: LoadedTire, state: StaticState) -> CavityCoupling | None:
+    """The air cavity of ``state`` where the tire file couples it (:func:`.cavity.loaded_coupling`), else None."""
+    return cavity.loaded_coupling(tire, state) if spec.construction.cavity.enabled else None
 
 
 def inflated_state(spec: LoadedSpec) -> StaticState:
@@ -109,12 +122,11 @@ def loaded_frfs(spec: LoadedSpec, case: LoadCase, freqs: np.ndarray | None = Non
     def compute() -> FRFResult:
         tire = built_tire(spec)
         linearised = dynamics.linearise(tire, state)
-        air = cavity.loaded_coupling(tire, state) if spec.construction.cavity.enabled else None
-        frf = dynamics.footprint_frf(linearised, freqs, cavity=air)
+        frf = dynamics.footprint_frf(linearised, freqs, cavity=loaded_air(spec, tire, state))
         return footprint.frf_result(frf, tasselli)
 
     # without the air, its settings change nothing: one cached sweep for every [cavity] setting
-    inputs = {"tire": spec if spec.construction.cavity.enabled else without_air(spec), **case.key(), "freqs": freqs}
+    inputs = {"tire": with_its_air(spec), **case.key(), "freqs": freqs}
     return cached(loaded_frfs, inputs, compute, runs=(cavity, dynamics, footprint, loading, road_contact, statics))
 
 
@@ -178,12 +190,12 @@ def reduced_footprint(spec: LoadedSpec, case: LoadCase, f_max: float) -> dynamic
     (:func:`.modal.harmonic_of_modes`); the basis itself is not kept. With the construction's
     ``[cavity] enabled``, the air of the loaded cavity coupled (:func:`.cavity.loaded_coupling`)."""
     f_max = guards.real("f_max", f_max, lo=0.0, lo_open=True, unit="Hz")
-    spec = spec if spec.construction.cavity.enabled else without_air(spec)
+    spec = with_its_air(spec)
     state = loaded_state(spec, case)
 
     def compute() -> dynamics.ReducedFootprint:
         tire = built_tire(spec)
-        air = cavity.loaded_coupling(tire, state) if spec.construction.cavity.enabled else None
+        air = loaded_air(spec, tire, state)
         reduced = dynamics.reduce(dynamics.linearise(tire, state), f_max, keep_basis=True, cavity=air)
         held = reduced.basis[:, reduced.n_boundary : reduced.n_boundary + reduced.n_modes]
         harmonic = modal.harmonic_of_modes(tire.mesh.theta, held)
@@ -215,7 +227,7 @@ def loaded_modal(
     def compute() -> ModalReduction:
         return modal.loaded_modal_reduction(reduced_footprint(spec, case, f_top), membership, visco, **options)
 
-    inputs = {"tire": spec, **case.key(), **options}
+    inputs = {"tire": with_its_air(spec), **case.key(), **options}
     return cached(loaded_modal, inputs, compute, runs=(modal, cavity, dynamics, loading, statics))
 
 
@@ -223,14 +235,9 @@ def _cleat_inputs(spec: LoadedSpec, case: LoadCase, height: float, base: float, 
     """A cleat passage's key: the tire (its air's settings where its file couples the air), the drum's case,
     the cleat (m) and the travel (m)."""
     return {
-        "tire": spec if spec.construction.cavity.enabled else without_air(spec), **case.key(),
+        "tire": with_its_air(spec), **case.key(),
         "height": float(height), "base": float(base), "shape": shape, "distance": tuple(float(d) for d in distance),
     }  # fmt: skip
-
-
-def _air(spec: LoadedSpec, tire: LoadedTire, state: StaticState):
-    """The loaded state's air cavity where the tire file couples it (:func:`.cavity.loaded_coupling`), else None."""
-    return cavity.loaded_coupling(tire, state) if spec.construction.cavity.enabled else None
 
 
 def quasi_static_cleat(
@@ -243,7 +250,7 @@ def quasi_static_cleat(
 
     def compute() -> ContactRun:
         profile, tire = cleat_profile(height, base, shape), built_tire(spec)
-        air = _air(spec, tire, state)
+        air = loaded_air(spec, tire, state)
         return one_sided.quasi_static_run(tire, state, profile, inputs["distance"], inputs["step"], air=air)
 
     runs = (one_sided, cavity, dynamics, loading, road_contact, statics)
@@ -262,7 +269,7 @@ def dynamic_cleat_runs(
 
     def compute() -> tuple[ContactRun, ContactRun]:
         profile, tire = cleat_profile(height, base, shape), built_tire(spec)
-        air = _air(spec, tire, state)
+        air = loaded_air(spec, tire, state)
         runs = one_sided.dynamic_runs(tire, state, profile, speed, inputs["distance"], dt, (False, True), air=air)
         return tuple(runs)
 
