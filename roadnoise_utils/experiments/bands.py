@@ -31,7 +31,7 @@ from .. import guards
 from ..analysis import relative_rms_error
 from ..repro import stages
 from ..repro.inputs import DEFAULT_FREQS
-from ..response.band_limit import frequency_domain_response
+from ..response.band_limit import frequency_domain_response, on_frf_grid
 from ..response.modal_reduction import ModalReduction
 from ..rm.fitting import FitSet
 from ..rm.realisation import assemble_fixed_hub
@@ -178,18 +178,6 @@ def _level_difference(psd: np.ndarray, reference: np.ndarray) -> float:
     return float(10 * np.log10(np.sum(psd) / np.sum(reference)))
 
 
-def _grid_frfs(visco: FRFResult):
-    """The direct tassello FRFs as a function of frequency, read from the default 1 Hz grid."""
-
-    def frfs(freqs: np.ndarray) -> np.ndarray:
-        pick = np.searchsorted(visco.freqs, freqs)
-        if np.any(pick >= visco.freqs.size) or not np.allclose(visco.freqs[pick], freqs):
-            raise ValueError("the comparison needs FRFs on the default 1 Hz grid (a record of whole seconds)")
-        return visco.H[:, pick]
-
-    return frfs
-
-
 def cleat_chain(
     tire, band: float, test: CleatConditions | None = None
 ) -> tuple[RoadInput, FitSet, np.ndarray, np.ndarray]:
@@ -209,7 +197,7 @@ def cleat_chain(
     window = band - TAPER
     rm = rm_cleat_response(modal_sections(assemble_fixed_hub(fits)), road, band=window, duration=test.fe_duration)
     visco = stages.frf_visco(tire, **drum)
-    fe = frequency_domain_response(_grid_frfs(visco), road.u, road.dt, window, test.fe_duration)
+    fe = frequency_domain_response(on_frf_grid(visco), road.u, road.dt, window, test.fe_duration)
     return road, fits, rm, fe
 
 
@@ -247,7 +235,7 @@ def band_extension(tire: str = "165_65R14_cross_section", bands: tuple[float, ..
     visco = stages.frf_visco(tire)
     static = stages.solve_static(tire)
     road_fe_psd = predicted_psd(
-        road_freqs, _grid_frfs(visco)(road_freqs), static, road_test.spectra()["rough"], road_test.speed
+        road_freqs, on_frf_grid(visco)(road_freqs), static, road_test.spectra()["rough"], road_test.speed
     )["F_F"]
     return BandExtension(
         tire=tire,

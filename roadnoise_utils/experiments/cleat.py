@@ -17,7 +17,7 @@ from the viscoelastic FE model in the frequency domain (no modal reduction, no f
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import control
 import numpy as np
@@ -28,7 +28,7 @@ from ..analysis import damped_components, force_peaks, relative_rms_error
 from ..repro import stages
 from ..repro.cache import cached
 from ..repro.stages import Tire
-from ..response.band_limit import band_limited, record_length
+from ..response.band_limit import band_limited, frequency_domain_response, on_frf_grid, record_length
 from ..rm.simulation import ModalSections, SimulationResult, modal_sections, simulate
 from ..road.cleat import cleat_input, cleat_profile
 from ..road.input import BAND, RoadInput
@@ -134,21 +134,25 @@ class CleatRun:
     Attributes
     ----------
     result : SimulationResult
-        Hub force history (N) against distance travelled (m).
+        Hub force history (N) against distance travelled (m) in the fit's band
+        (:func:`in_band_result`): the chain's answer, which the peaks are read from.
     peaks : pandas.DataFrame
         The two largest force peaks (distance, force).
     decay : pandas.DataFrame or None
         Damped components of the free decay after the cleat has left the footprint (largest
         first), or ``None`` for a quasi-static run.
+    stepped : SimulationResult
+        The hub force as simulated, before the band limit.
     """
 
     result: SimulationResult
     peaks: pd.DataFrame
     decay: pd.DataFrame | None
+    stepped: SimulationResult
 
     @property
     def peak_force(self) -> float:
-        """Largest hub force (N)."""
+        """Largest hub force in the fit's band (N)."""
         return float(self.result.force.max())
 
 
@@ -252,19 +256,39 @@ DECAY_DURATION = 0.06
 DECAY_COMPONENTS = 6
 
 
+#: Record over which a run's hub force is band-limited (s): the run zero-padded to it, so that the
+#: filter's circular wrap cannot carry the end of the decay back onto the cleat's crossing.
+RECORD = 1.0
+
+
+def in_band_result(result: SimulationResult, band: float = BAND) -> SimulationResult:
+    """``result`` with its hub force band-limited to ``band`` Hz (zero phase, over a :data:`RECORD` s record).
+
+    The chain is fitted to the tire's FRFs over 0-``band`` Hz (Eq. 1-2); above the band its poles
+    and residues follow nothing of the tire, and a sharp input such as the cleat at 30 km/h excites
+    them. Its peaks are read in the band, as the FE comparison and the one-sided runs read theirs.
+    """
+    dt = float(result.t[1] - result.t[0])
+    n_fft = max(result.force.size, int(round(RECORD / dt)))
+    return replace(result, force=band_limited(result.force, dt, band, n_fft=n_fft))
+
+
 def analyse_run(
     result: SimulationResult, static: Footprint, base: float, dynamic: bool, band: float = BAND
 ) -> CleatRun:
     """Peaks while the cleat crosses the footprint and, for a dynamic run, the free-decay components.
 
-    The decay table keeps the components inside the model's band (0-``band`` Hz); components the
-    matrix pencil finds above it are dropped, with a :class:`~roadnoise_utils.guards.RoadnoiseWarning`
-    when they carry more than 1 % of the largest amplitude. A record shorter than
-    :data:`DECAY_DURATION` after the cleat has left gives a warning (its damping ratios are not
-    reliable); one too short to analyse is refused, naming the distance it needs.
+    The peaks are read on the force in the fit's band (:func:`in_band_result`). The decay's
+    components are found in the force as simulated (a filtered record would ring where it ends),
+    and those above the model's band (0-``band`` Hz) are dropped, with a
+    :class:`~roadnoise_utils.guards.RoadnoiseWarning` when they carry more than 1 % of the largest
+    amplitude. A record shorter than :data:`DECAY_DURATION` after the cleat has left gives a warning
+    (its damping ratios are not reliable); one too short to analyse is refused, naming the distance
+    it needs.
     """
     crossing = (footprint_entry(static), footprint_exit(static, base))
-    peaks = force_peaks(result.distance, result.force, n=2, window=crossing)
+    in_band_run = in_band_result(result, band)
+    peaks = force_peaks(result.distance, in_band_run.force, n=2, window=crossing)
     decay = None
     if dynamic:
         start = footprint_exit(static, base) + 0.01
@@ -283,7 +307,7 @@ def analyse_run(
                 f"ratios are unreliable (distance[1] >= {start + needed * result.road.speed * dt:.3f} m gives enough)"
             )
         decay = in_band(damped_components(result.force[free], dt, n_components=DECAY_COMPONENTS), band)
-    return CleatRun(result=result, peaks=peaks, decay=decay)
+    return CleatRun(result=in_band_run, peaks=peaks, decay=decay, stepped=result)
 
 
 def in_band(components: pd.DataFrame, band: float) -> pd.DataFrame:
@@ -350,7 +374,7 @@ def cleat_test(
     n_poles : int, optional
         Poles per tassello; default the lowest order that fits every tassello within 1 %.
     fe_reference : bool
-        Also compute the dynamic passage from the FE model (cached after the first run).
+        Also compute the dynamic passage from the FE model (:func:`fe_passage`; cached after the first run).
     """
     spec = stages.load_tire(tire)
     test = cleat_conditions() if conditions is None else conditions
@@ -374,16 +398,32 @@ def cleat_test(
         "cleat_runs",
         {"tire": spec, "conditions": test, "n_poles": n_poles},
         runs,
-        runs=(run_cleat, simulate, cleat_input, *stages.frf_runs(spec)),
+        runs=(run_cleat, analyse_run, in_band_result, simulate, cleat_input, *stages.frf_runs(spec)),
     )
     comparison = None
     if fe_reference:
-        road, fe_force = stages.fe_cleat_response(
+        road, fe_force = fe_passage(spec, test, static)
+        comparison = FEComparison(road, fe_force, rm_cleat_response(sections, road, duration=test.fe_duration))
+    return CleatTest(spec, test, static, system, sections, quasi, dynamic, comparison)
+
+
+def fe_passage(spec: ModelSpec, test: CleatConditions, static: Footprint) -> tuple[RoadInput, np.ndarray]:
+    r"""The dynamic passage straight from the FE tire, no fit: ``(road, hub force)`` (N), band-limited.
+
+    The model's own direct response where it has one (capability ``direct_response``); otherwise
+    the frequency-domain sum :math:`\sum_i H_i(\omega)\,U_i(\omega)` over its tassello FRFs on the
+    drum, read on their 1 Hz grid (the record is ``test.fe_duration``, whole seconds), band-limited
+    the same way (:func:`~roadnoise_utils.response.band_limit.frequency_domain_response`).
+    """
+    cleat = {"height": test.height, "base": test.base, "shape": test.shape}
+    if tire_model(spec).has("direct_response"):
+        return stages.fe_cleat_response(
             spec, test.dynamic_speed, **cleat, drum_radius=test.drum_radius,
             distance=test.fe_distance, duration=test.fe_duration,
         )  # fmt: skip
-        comparison = FEComparison(road, fe_force, rm_cleat_response(sections, road, duration=test.fe_duration))
-    return CleatTest(spec, test, static, system, sections, quasi, dynamic, comparison)
+    road = cleat_input(static, test.dynamic_speed, **cleat, distance=test.fe_distance)
+    frfs = stages.frf_visco(spec, road="drum", drum_radius=test.drum_radius)
+    return road, frequency_domain_response(on_frf_grid(frfs), road.u, road.dt, BAND, test.fe_duration)
 
 
 def quasi_static_force(static_influence: np.ndarray, road: RoadInput) -> np.ndarray:

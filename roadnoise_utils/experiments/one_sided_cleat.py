@@ -26,13 +26,20 @@ from ..response.band_limit import band_limited
 from ..rm.simulation import modal_sections
 from ..tire.contact import ContactRun
 from ..tire.model import ContactSetup, Footprint, ModelSpec, tire_model
-from .cleat import DECAY_COMPONENTS, PAPER_TIRE, CleatConditions, cleat_conditions, cleat_numbers, in_band, run_cleat
+from .cleat import (
+    DECAY_COMPONENTS,
+    PAPER_TIRE,
+    RECORD,
+    CleatConditions,
+    cleat_conditions,
+    cleat_numbers,
+    in_band,
+    run_cleat,
+)
 from .conditions import load_conditions, resolve
 
 #: Largest mesh the one-sided runs accept (elements around the circumference).
 MAX_ELEMENTS = 2400
-#: Record of the band-limiting FFT (s): long enough for the decay.
-RECORD = 1.0
 #: Vanishing-speed runs of :func:`convergence`: (speed in m/s, time step in s). 0.1 m/s is the
 #: paper's base-curve speed (0.36 km/h, *Validation of the Model for Fixed Hub*); 0.03 m/s is
 #: slower still. The steps keep about 0.5 mm and 0.3 mm of travel per step.

@@ -14,10 +14,14 @@ The second method every RM-chain result is checked against:
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ..road.input import BAND, RoadInput
+
+if TYPE_CHECKING:
+    from ..tire.model import FRFResult
 
 
 def band_window(freqs: np.ndarray, band: float = BAND, taper: float = 50.0) -> np.ndarray:
@@ -58,3 +62,22 @@ def frequency_domain_response(
     spectrum = np.zeros(freqs.size, complex)
     spectrum[keep] = np.sum(frfs(freqs[keep]) * np.fft.rfft(u, n, axis=1)[:, keep], axis=0) * window[keep]
     return np.fft.irfft(spectrum, n)[: u.shape[1]]
+
+
+def on_frf_grid(frfs: FRFResult) -> Callable[[np.ndarray], np.ndarray]:
+    """The FRFs ``frfs.H`` (n_inputs, n_freqs) as a function of frequency for
+    :func:`frequency_domain_response`, read at their own frequencies (no interpolation): a record
+    of whole seconds puts every FFT bin on the default 1 Hz grid; other bins are refused."""
+
+    def at(freqs: np.ndarray) -> np.ndarray:
+        pick = np.searchsorted(frfs.freqs, freqs)
+        if np.any(pick >= frfs.freqs.size) or not np.allclose(frfs.freqs[pick], freqs):
+            spacing = freqs[1] - freqs[0] if freqs.size > 1 else float("nan")
+            raise ValueError(
+                f"the record's FFT bins ({freqs[0]:g}-{freqs[-1]:g} Hz every {spacing:g} Hz) must be frequencies of "
+                f"the FRFs ({frfs.freqs[0]:g}-{frfs.freqs[-1]:g} Hz, {frfs.freqs.size} of them): a record of whole "
+                "seconds on a 1 Hz grid reaching past the band"
+            )
+        return frfs.H[:, pick]
+
+    return at
