@@ -135,7 +135,7 @@ class CleatRun:
     ----------
     result : SimulationResult
         Hub force history (N) against distance travelled (m) in the fit's band
-        (:func:`in_band_result`): the chain's answer, which the peaks are read from.
+        (:func:`simulated_in_band`): the chain's answer, which the peaks are read from.
     peaks : pandas.DataFrame
         The two largest force peaks (distance, force).
     decay : pandas.DataFrame or None
@@ -256,39 +256,49 @@ DECAY_DURATION = 0.06
 DECAY_COMPONENTS = 6
 
 
-#: Record over which a run's hub force is band-limited (s): the run zero-padded to it, so that the
-#: filter's circular wrap cannot carry the end of the decay back onto the cleat's crossing.
+#: Record over which a run's hub force is band-limited (s): the passage simulated on over a flat road
+#: to it, so that the filter sees the decay end and its circular wrap cannot reach the crossing.
 RECORD = 1.0
 
 
-def in_band_result(result: SimulationResult, band: float = BAND) -> SimulationResult:
-    """``result`` with its hub force band-limited to ``band`` Hz (zero phase, over a :data:`RECORD` s record).
+def simulated_in_band(
+    system: control.StateSpace | ModalSections, road: RoadInput, band: float = BAND, duration: float = RECORD
+) -> tuple[SimulationResult, SimulationResult]:
+    """The passage ``road`` through the fixed-hub tire ``system``: ``(as stepped, in the fit's band)``.
 
     The chain is fitted to the tire's FRFs over 0-``band`` Hz (Eq. 1-2); above the band its poles
     and residues follow nothing of the tire, and a sharp input such as the cleat at 30 km/h excites
-    them. Its peaks are read in the band, as the FE comparison and the one-sided runs read theirs.
+    them. The road is continued flat to ``duration`` s (default :data:`RECORD`) and simulated from rest, the force
+    band-limited (zero phase, :func:`~roadnoise_utils.response.band_limit.band_limited`) and both
+    cut back to the road's length: the FE comparison's reading (:func:`rm_cleat_response`), which
+    a record ending in mid-decay does not disturb.
     """
-    dt = float(result.t[1] - result.t[0])
-    n_fft = max(result.force.size, int(round(RECORD / dt)))
-    return replace(result, force=band_limited(result.force, dt, band, n_fft=n_fft))
+    n = road.u.shape[1]
+    full = simulate(system, road.padded(record_length(road, duration)))
+    stepped = SimulationResult(t=road.t, distance=road.distance, force=full.force[:n], road=road)
+    return stepped, replace(stepped, force=band_limited(full.force, road.dt, band)[:n])
 
 
 def analyse_run(
-    result: SimulationResult, static: Footprint, base: float, dynamic: bool, band: float = BAND
+    result: SimulationResult,
+    in_band_result: SimulationResult,
+    static: Footprint,
+    base: float,
+    dynamic: bool,
+    band: float = BAND,
 ) -> CleatRun:
     """Peaks while the cleat crosses the footprint and, for a dynamic run, the free-decay components.
 
-    The peaks are read on the force in the fit's band (:func:`in_band_result`). The decay's
-    components are found in the force as simulated (a filtered record would ring where it ends),
-    and those above the model's band (0-``band`` Hz) are dropped, with a
-    :class:`~roadnoise_utils.guards.RoadnoiseWarning` when they carry more than 1 % of the largest
-    amplitude. A record shorter than :data:`DECAY_DURATION` after the cleat has left gives a warning
-    (its damping ratios are not reliable); one too short to analyse is refused, naming the distance
-    it needs.
+    ``result`` is the force as stepped, ``in_band_result`` the same in the fit's band
+    (:func:`simulated_in_band`). The peaks are read in the band. The decay's components are found
+    in the force as stepped (a filtered record would ring where it ends), and those above the
+    model's band (0-``band`` Hz) are dropped, with a :class:`~roadnoise_utils.guards.RoadnoiseWarning`
+    when they carry more than 1 % of the largest amplitude. A record shorter than
+    :data:`DECAY_DURATION` after the cleat has left gives a warning (its damping ratios are not
+    reliable); one too short to analyse is refused, naming the distance it needs.
     """
     crossing = (footprint_entry(static), footprint_exit(static, base))
-    in_band_run = in_band_result(result, band)
-    peaks = force_peaks(result.distance, in_band_run.force, n=2, window=crossing)
+    peaks = force_peaks(result.distance, in_band_result.force, n=2, window=crossing)
     decay = None
     if dynamic:
         start = footprint_exit(static, base) + 0.01
@@ -307,7 +317,7 @@ def analyse_run(
                 f"ratios are unreliable (distance[1] >= {start + needed * result.road.speed * dt:.3f} m gives enough)"
             )
         decay = in_band(damped_components(result.force[free], dt, n_components=DECAY_COMPONENTS), band)
-    return CleatRun(result=in_band_run, peaks=peaks, decay=decay, stepped=result)
+    return CleatRun(result=in_band_result, peaks=peaks, decay=decay, stepped=result)
 
 
 def in_band(components: pd.DataFrame, band: float) -> pd.DataFrame:
@@ -339,21 +349,14 @@ def run_cleat(
     asks for the free-decay analysis.
     """
     road = cleat_input(static, speed, height, base, shape, distance)
-    result = simulate(system, road)
-    return analyse_run(result, static, base, speed > 1.0 if dynamic is None else dynamic)
+    stepped, in_band_result = simulated_in_band(system, road)
+    return analyse_run(stepped, in_band_result, static, base, speed > 1.0 if dynamic is None else dynamic)
 
 
 def rm_cleat_response(system, road: RoadInput, band: float = BAND, duration: float = 1.0) -> np.ndarray:
-    """Hub force of ``road`` from the RM chain, on the same footing as the FE reference.
-
-    The tassello inputs are zero-padded to ``duration`` s and simulated from rest, so the free
-    decay is complete before the record ends; the force is band-limited by the same
-    :func:`roadnoise_utils.response.band_limit.band_window` (zero phase) and cut back to the
-    road's length. Filtering a record cut short in mid-decay instead would smear the cut into
-    the compared samples.
-    """
-    padded = road.padded(record_length(road, duration))
-    return band_limited(simulate(system, padded).force, road.dt, band)[: road.u.shape[1]]
+    """Hub force (N) of ``road`` from the RM chain, on the same footing as the FE reference: the
+    passage continued over a flat road to ``duration`` s and band-limited (:func:`simulated_in_band`)."""
+    return simulated_in_band(system, road, band, duration)[1].force
 
 
 def cleat_test(
@@ -398,7 +401,7 @@ def cleat_test(
         "cleat_runs",
         {"tire": spec, "conditions": test, "n_poles": n_poles},
         runs,
-        runs=(run_cleat, analyse_run, in_band_result, simulate, cleat_input, *stages.frf_runs(spec)),
+        runs=(run_cleat, analyse_run, simulated_in_band, simulate, cleat_input, *stages.frf_runs(spec)),
     )
     comparison = None
     if fe_reference:

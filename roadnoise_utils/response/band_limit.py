@@ -67,16 +67,20 @@ def frequency_domain_response(
 def on_frf_grid(frfs: FRFResult) -> Callable[[np.ndarray], np.ndarray]:
     """The FRFs ``frfs.H`` (n_inputs, n_freqs) as a function of frequency for
     :func:`frequency_domain_response`, read at their own frequencies (no interpolation): a record
-    of whole seconds puts every FFT bin on the default 1 Hz grid; other bins are refused."""
+    of whole seconds puts every FFT bin on the default 1 Hz grid (each bin taken at the nearest of
+    the FRFs' frequencies, within 1e-6 Hz); a bin between them is refused."""
 
     def at(freqs: np.ndarray) -> np.ndarray:
-        pick = np.searchsorted(frfs.freqs, freqs)
-        if np.any(pick >= frfs.freqs.size) or not np.allclose(frfs.freqs[pick], freqs):
-            spacing = freqs[1] - freqs[0] if freqs.size > 1 else float("nan")
+        freqs = np.asarray(freqs, dtype=float)
+        after = np.clip(np.searchsorted(frfs.freqs, freqs), 1, frfs.freqs.size - 1)
+        nearer_below = np.abs(freqs - frfs.freqs[after - 1]) <= np.abs(frfs.freqs[after] - freqs)
+        pick = np.where(nearer_below, after - 1, after)
+        if np.any(np.abs(frfs.freqs[pick] - freqs) > 1e-6):
+            off = freqs[np.argmax(np.abs(frfs.freqs[pick] - freqs))]
             raise ValueError(
-                f"the record's FFT bins ({freqs[0]:g}-{freqs[-1]:g} Hz every {spacing:g} Hz) must be frequencies of "
-                f"the FRFs ({frfs.freqs[0]:g}-{frfs.freqs[-1]:g} Hz, {frfs.freqs.size} of them): a record of whole "
-                "seconds on a 1 Hz grid reaching past the band"
+                f"the record's FFT bin at {off:.6g} Hz is not a frequency of the FRFs ({frfs.freqs[0]:g}-"
+                f"{frfs.freqs[-1]:g} Hz, {frfs.freqs.size} of them): a record of whole seconds on a 1 Hz grid "
+                "reaching past the band"
             )
         return frfs.H[:, pick]
 
