@@ -41,7 +41,8 @@ from ..road.input import RoadInput, sample_rate_for
 from ..road.kernels import tassellation_error
 from ..tire.model import FRFResult
 from ..vehicle.corner import predicted_psd
-from .cleat import CleatConditions, cleat_conditions, rm_cleat_response
+from .cleat import CleatConditions, cleat_conditions
+from .passage import rm_cleat_response
 from .road import RoadTestConditions, road_test_conditions
 
 #: Width of the raised-cosine edge of the comparison window below each band (Hz).

@@ -12,28 +12,28 @@ one"; after the cleat has left, a decay dominated by the 80 Hz first vertical mo
 default; :func:`cleat_test` runs the RM chain (fitted state-space tire,
 :func:`roadnoise_utils.rm.simulation.simulate`) and, on request, the same passage straight
 from the viscoelastic FE model in the frequency domain (no modal reduction, no fitting,
-:func:`roadnoise_utils.tire.ring.fe_reference.fe_cleat_response`).
+:func:`roadnoise_utils.tire.ring.fe_reference.fe_cleat_response`; :mod:`.passage`).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import control
 import numpy as np
 import pandas as pd
 
 from .. import guards
-from ..analysis import damped_components, force_peaks, relative_rms_error
+from ..analysis import damped_components, force_peaks
 from ..repro import stages
 from ..repro.cache import cached
 from ..repro.stages import Tire
-from ..response.band_limit import band_limited, frequency_domain_response, on_frf_grid, record_length
 from ..rm.simulation import ModalSections, SimulationResult, modal_sections, simulate
 from ..road.cleat import cleat_input, cleat_profile
 from ..road.input import BAND, RoadInput
 from ..tire.model import Footprint, ModelSpec, tire_model
 from .conditions import load_conditions, resolve
+from .passage import FEComparison, fe_passage, rm_cleat_response, simulated_in_band
 
 #: The paper's tire for this test.
 PAPER_TIRE = "165_65R14"
@@ -135,7 +135,7 @@ class CleatRun:
     ----------
     result : SimulationResult
         Hub force history (N) against distance travelled (m) in the fit's band
-        (:func:`simulated_in_band`): the chain's answer, which the peaks are read from.
+        (:func:`.passage.simulated_in_band`): the chain's answer, which the peaks are read from.
     peaks : pandas.DataFrame
         The two largest force peaks (distance, force).
     decay : pandas.DataFrame or None
@@ -154,33 +154,6 @@ class CleatRun:
     def peak_force(self) -> float:
         """Largest hub force in the fit's band (N)."""
         return float(self.result.force.max())
-
-
-@dataclass(frozen=True, eq=False)
-class FEComparison:
-    """The RM chain against the FE model on the same record, both band-limited to 250 Hz the same way.
-
-    Attributes
-    ----------
-    road : RoadInput
-        The cleat's tassello inputs.
-    fe_force, rm_force : ndarray
-        Hub force (N) from the FE model (frequency domain) and from the RM chain (time domain).
-    """
-
-    road: RoadInput
-    fe_force: np.ndarray
-    rm_force: np.ndarray
-
-    @property
-    def peak_difference(self) -> float:
-        """RM peak over FE peak, minus one (-)."""
-        return float(self.rm_force.max() / self.fe_force.max() - 1.0)
-
-    @property
-    def rms_difference(self) -> float:
-        """Relative RMS error of the RM force against the FE force (-)."""
-        return relative_rms_error(self.rm_force, self.fe_force)
 
 
 @dataclass(frozen=True, eq=False)
@@ -256,29 +229,6 @@ DECAY_DURATION = 0.06
 DECAY_COMPONENTS = 6
 
 
-#: Record over which a run's hub force is band-limited (s): the passage simulated on over a flat road
-#: to it, so that the filter sees the decay end and its circular wrap cannot reach the crossing.
-RECORD = 1.0
-
-
-def simulated_in_band(
-    system: control.StateSpace | ModalSections, road: RoadInput, band: float = BAND, duration: float = RECORD
-) -> tuple[SimulationResult, SimulationResult]:
-    """The passage ``road`` through the fixed-hub tire ``system``: ``(as stepped, in the fit's band)``.
-
-    The chain is fitted to the tire's FRFs over 0-``band`` Hz (Eq. 1-2); above the band its poles
-    and residues follow nothing of the tire, and a sharp input such as the cleat at 30 km/h excites
-    them. The road is continued flat to ``duration`` s (default :data:`RECORD`) and simulated from rest, the force
-    band-limited (zero phase, :func:`~roadnoise_utils.response.band_limit.band_limited`) and both
-    cut back to the road's length: the FE comparison's reading (:func:`rm_cleat_response`), which
-    a record ending in mid-decay does not disturb.
-    """
-    n = road.u.shape[1]
-    full = simulate(system, road.padded(record_length(road, duration)))
-    stepped = SimulationResult(t=road.t, distance=road.distance, force=full.force[:n], road=road)
-    return stepped, replace(stepped, force=band_limited(full.force, road.dt, band)[:n])
-
-
 def analyse_run(
     result: SimulationResult,
     in_band_result: SimulationResult,
@@ -290,7 +240,7 @@ def analyse_run(
     """Peaks while the cleat crosses the footprint and, for a dynamic run, the free-decay components.
 
     ``result`` is the force as stepped, ``in_band_result`` the same in the fit's band
-    (:func:`simulated_in_band`). The peaks are read in the band. The decay's components are found
+    (:func:`.passage.simulated_in_band`). The peaks are read in the band. The decay's components are found
     in the force as stepped (a filtered record would ring where it ends), and those above the
     model's band (0-``band`` Hz) are dropped, with a :class:`~roadnoise_utils.guards.RoadnoiseWarning`
     when they carry more than 1 % of the largest amplitude. A record shorter than
@@ -353,12 +303,6 @@ def run_cleat(
     return analyse_run(stepped, in_band_result, static, base, speed > 1.0 if dynamic is None else dynamic)
 
 
-def rm_cleat_response(system, road: RoadInput, band: float = BAND, duration: float = 1.0) -> np.ndarray:
-    """Hub force (N) of ``road`` from the RM chain, on the same footing as the FE reference: the
-    passage continued over a flat road to ``duration`` s and band-limited (:func:`simulated_in_band`)."""
-    return simulated_in_band(system, road, band, duration)[1].force
-
-
 def cleat_test(
     tire: str | ModelSpec = PAPER_TIRE,
     *,
@@ -377,7 +321,7 @@ def cleat_test(
     n_poles : int, optional
         Poles per tassello; default the lowest order that fits every tassello within 1 %.
     fe_reference : bool
-        Also compute the dynamic passage from the FE model (:func:`fe_passage`; cached after the first run).
+        Also compute the dynamic passage from the FE model (:func:`.passage.fe_passage`; cached after the first run).
     """
     spec = stages.load_tire(tire)
     test = cleat_conditions() if conditions is None else conditions
@@ -408,25 +352,6 @@ def cleat_test(
         road, fe_force = fe_passage(spec, test, static)
         comparison = FEComparison(road, fe_force, rm_cleat_response(sections, road, duration=test.fe_duration))
     return CleatTest(spec, test, static, system, sections, quasi, dynamic, comparison)
-
-
-def fe_passage(spec: ModelSpec, test: CleatConditions, static: Footprint) -> tuple[RoadInput, np.ndarray]:
-    r"""The dynamic passage straight from the FE tire, no fit: ``(road, hub force)`` (N), band-limited.
-
-    The model's own direct response where it has one (capability ``direct_response``); otherwise
-    the frequency-domain sum :math:`\sum_i H_i(\omega)\,U_i(\omega)` over its tassello FRFs on the
-    drum, read on their 1 Hz grid (the record is ``test.fe_duration``, whole seconds), band-limited
-    the same way (:func:`~roadnoise_utils.response.band_limit.frequency_domain_response`).
-    """
-    cleat = {"height": test.height, "base": test.base, "shape": test.shape}
-    if tire_model(spec).has("direct_response"):
-        return stages.fe_cleat_response(
-            spec, test.dynamic_speed, **cleat, drum_radius=test.drum_radius,
-            distance=test.fe_distance, duration=test.fe_duration,
-        )  # fmt: skip
-    road = cleat_input(static, test.dynamic_speed, **cleat, distance=test.fe_distance)
-    frfs = stages.frf_visco(spec, road="drum", drum_radius=test.drum_radius)
-    return road, frequency_domain_response(on_frf_grid(frfs), road.u, road.dt, BAND, test.fe_duration)
 
 
 def quasi_static_force(static_influence: np.ndarray, road: RoadInput) -> np.ndarray:

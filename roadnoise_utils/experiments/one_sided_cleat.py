@@ -29,7 +29,6 @@ from ..tire.model import ContactSetup, Footprint, ModelSpec, tire_model
 from .cleat import (
     DECAY_COMPONENTS,
     PAPER_TIRE,
-    RECORD,
     CleatConditions,
     cleat_conditions,
     cleat_numbers,
@@ -37,6 +36,7 @@ from .cleat import (
     run_cleat,
 )
 from .conditions import load_conditions, resolve
+from .passage import RECORD
 
 #: Largest mesh the one-sided runs accept (elements around the circumference).
 MAX_ELEMENTS = 2400
