@@ -2,7 +2,7 @@
 
 :func:`simulated_in_band` runs the RM chain (:func:`roadnoise_utils.rm.simulation.simulate`) over
 the passage continued on a flat road, from rest, and band-limits its hub force to the fits' band:
-the force the cleat test reads its peaks from (:mod:`.cleat`). :func:`fe_passage` gives the same
+the force the cleat test reads its peaks from (:mod:`roadnoise_utils.experiments.cleat`). :func:`fe_passage` gives the same
 passage with no fit, the second method of :class:`FEComparison`: the model's own direct response
 (capability ``direct_response``) or the frequency-domain sum over its tassello FRFs on their grid.
 """
