@@ -2,9 +2,10 @@
 
 :func:`simulated_in_band` runs the RM chain (:func:`roadnoise_utils.rm.simulation.simulate`) over
 the passage continued on a flat road, from rest, and band-limits its hub force to the fits' band:
-the force the cleat test reads its peaks from (:mod:`roadnoise_utils.experiments.cleat`). :func:`fe_passage` gives the same
-passage with no fit, the second method of :class:`FEComparison`: the model's own direct response
-(capability ``direct_response``) or the frequency-domain sum over its tassello FRFs on their grid.
+the force the cleat test reads its peaks from (:mod:`roadnoise_utils.experiments.cleat`).
+:func:`fe_passage` gives the same passage with no fit, the second method of :class:`FEComparison`:
+the model's own direct response (capability ``direct_response``) or the frequency-domain sum over
+its tassello FRFs on their grid.
 """
 
 from __future__ import annotations
@@ -39,10 +40,10 @@ def simulated_in_band(
 
     The chain is fitted to the tire's FRFs over 0-``band`` Hz (Eq. 1-2); above the band its poles
     and residues follow nothing of the tire, and a sharp input such as the cleat at 30 km/h excites
-    them. The road is continued flat to ``duration`` s (default :data:`RECORD`) and simulated from rest, the force
-    band-limited (zero phase, :func:`~roadnoise_utils.response.band_limit.band_limited`) and both
-    cut back to the road's length: the FE comparison's reading (:func:`rm_cleat_response`), which
-    a record ending in mid-decay does not disturb.
+    them. The road is continued flat to ``duration`` s (default :data:`RECORD`) and simulated from
+    rest, the force band-limited (zero phase, :func:`~roadnoise_utils.response.band_limit.band_limited`)
+    and both cut back to the road's length: the FE comparison's reading (:func:`rm_cleat_response`),
+    which a record ending in mid-decay does not disturb.
     """
     n = road.u.shape[1]
     full = simulate(system, road.padded(record_length(road, duration)))
