@@ -111,13 +111,20 @@ def load_sweep(
     """The tire at each of ``loads`` (N, increasing) on ``road``, each loading continuing from the last
     state (:func:`load_on_road`): one pass of road steps for the whole load-deflection curve, from the
     inflated tire or from ``start`` (a state carrying less than the first load: a sweep continued)."""
-    loads = [guards.real("loads", load, *guards.LOAD_RANGE, unit="N") for load in loads]
-    if not loads or any(b <= a for a, b in zip(loads, loads[1:])):
-        raise ValueError(f"loads = {loads}: give one or more strictly increasing loads (N)")
+    loads = increasing_loads(loads)
     states: list[StaticState] = []
     for load in loads:
         states.append(load_on_road(tire, inflated, load, road_step, road, start=states[-1] if states else start))
     return states
+
+
+def increasing_loads(loads) -> list[float]:
+    """``loads`` as floats (N), each within :data:`roadnoise_utils.guards.LOAD_RANGE`, one or more, strictly
+    increasing: a load sweep's loads, refused by name otherwise."""
+    loads = [guards.real("loads", load, *guards.LOAD_RANGE, unit="N") for load in loads]
+    if not loads or any(b <= a for a, b in zip(loads, loads[1:])):
+        raise ValueError(f"loads = {loads}: give one or more strictly increasing loads (N)")
+    return loads
 
 
 def _pressed(

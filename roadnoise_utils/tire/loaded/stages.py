@@ -11,7 +11,7 @@ stage                        caches
                              (:func:`.dynamics.footprint_frf`), on the footprint's tasselli; with
                              ``[cavity] enabled`` the air coupled (:func:`.cavity.loaded_coupling`)
 :func:`swept_states`         one loading through several loads on the flat road
-                             (:func:`.loading.load_sweep`)
+                             (:func:`.loading.load_sweep`), from :func:`loaded_state` at the first
 :func:`load_curve`           their footprints
 :func:`round_stiffness`      K_v with the geometric nonlinearity off (:mod:`.linearised`)
 :func:`reduced_footprint`    the linearised tire's Craig-Bampton reduction, its held modes' wave numbers
@@ -132,12 +132,23 @@ def loaded_frfs(spec: LoadedSpec, case: LoadCase, freqs: np.ndarray | None = Non
 
 def swept_states(spec: LoadedSpec, loads: tuple[float, ...]) -> list[StaticState]:
     """Cached: the tire at each of ``loads`` (N, increasing) on the flat road, one loading from
-    :func:`inflated_state` continued from load to load (:func:`.loading.load_sweep`)."""
-    loads = tuple(guards.real("loads", load, *guards.LOAD_RANGE, unit="N") for load in loads)
+    :func:`inflated_state` continued from load to load (:func:`.loading.load_sweep`).
+
+    The loading's first leg, from the inflated tire to ``loads[0]``, is the flat road's
+    :func:`loaded_state` at that load (the same solves): it is that cached stage, shared with the
+    load cases, and the sweep continues from it.
+    """
+    loads = tuple(loading.increasing_loads(loads))
     spec = without_air(spec)
 
     def compute() -> list[StaticState]:
-        return loading.load_sweep(built_tire(spec), inflated_state(spec), list(loads), spec.solid_mesh.road_step)
+        first = loaded_state(spec, LoadCase.of("flat", loads[0]))
+        if len(loads) == 1:
+            return [first]
+        rest = loading.load_sweep(
+            built_tire(spec), inflated_state(spec), list(loads[1:]), spec.solid_mesh.road_step, start=first
+        )
+        return [first, *rest]
 
     inputs = {"tire": spec, "road": "flat", "loads": loads}
     return cached(swept_states, inputs, compute, runs=(loading, road_contact, statics))

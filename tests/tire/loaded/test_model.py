@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 import roadnoise_utils as ru
-from roadnoise_utils.tire.loaded import loading, road_contact
+from roadnoise_utils.tire.loaded import loading, road_contact, stages
 from roadnoise_utils.tire.loaded.spec import from_dict
 from roadnoise_utils.tire.model import NotApplicable
 
@@ -53,6 +53,25 @@ def test_a_load_sweep_continues_each_load_from_the_last(monkeypatch):
     for loads in ([1000.0, 900.0], [], [1000.0, 1000.0]):
         with pytest.raises(ValueError, match="increasing"):
             loading.load_sweep(None, None, loads, 0.001)
+
+
+def test_a_cached_sweep_takes_its_first_load_from_the_load_case_and_continues_from_it(small_loaded, monkeypatch):
+    """The sweep's first leg (inflated tire to its first load, flat road) is the same loading as the load case
+    at that load: it is taken from that cached stage, the rest continued from it."""
+    cases, sweeps = [], []
+    monkeypatch.setattr(stages, "cached", lambda stage, inputs, compute, runs=(): compute())
+    monkeypatch.setattr(stages, "built_tire", lambda spec: "tire")
+    monkeypatch.setattr(stages, "inflated_state", lambda spec: "inflated")
+    monkeypatch.setattr(stages, "loaded_state", lambda spec, case: cases.append(case) or f"case at {case.load:g} N")
+    monkeypatch.setattr(
+        loading, "load_sweep", lambda tire, inflated, loads, step, start: sweeps.append((loads, start)) or loads
+    )
+    assert stages.swept_states(small_loaded.spec, (600.0, 800.0, 1000.0)) == ["case at 600 N", 800.0, 1000.0]
+    assert [(c.road.kind, c.load) for c in cases] == [("flat", 600.0)]
+    assert sweeps == [([800.0, 1000.0], "case at 600 N")]
+    assert stages.swept_states(small_loaded.spec, (1000.0,)) == ["case at 1000 N"] and len(sweeps) == 1
+    with pytest.raises(ValueError, match="increasing"):
+        stages.swept_states(small_loaded.spec, (1000.0, 600.0))
 
 
 def test_a_load_the_tire_cannot_carry_or_a_step_newton_cannot_follow_is_refused_naming_it(tire, inflated, monkeypatch):
