@@ -31,6 +31,7 @@ from .statics import (
     LocalSystem,
     Rim,
     StaticState,
+    admissible,
     newton,
     residual_and_tangent,
     solve_tangent,
@@ -142,6 +143,7 @@ def press_on_road(
     steps: int = 4,
     start: StaticState | None = None,
     check_stability: bool = True,
+    guess: np.ndarray | None = None,
 ) -> StaticState:
     """The road raised ``lift`` (m) from touching the inflated tread, in ``steps`` equal steps; rim held.
 
@@ -150,7 +152,10 @@ def press_on_road(
     checked (:func:`is_stable`; ``check_stability=False``: not, ``stable`` is ``None``, for a state
     on the way to another); a saddle gets a :class:`~roadnoise_utils.guards.RoadnoiseWarning`.
     ``start``: a loaded state of the same inflation and road to continue from (its lift and
-    contact set) instead of the inflated tire.
+    contact set) instead of the inflated tire. ``guess``: with one step, displacements near the state
+    sought to start Newton's iterations from instead of ``start``'s, the tread nodes inside the road
+    there held from the first iteration (a load sweep's extrapolation of its last two states,
+    :mod:`.loading`); ignored where it inverts the mesh.
     """
     lift = guards.real("lift", lift, 0.0, lo_open=True, unit="m")
     steps = guards.integer("steps", steps, 1)
@@ -176,6 +181,14 @@ def press_on_road(
         raise ValueError(f"start stands on the {start.road.kind} road, not on the {road.kind} road given")
     begin = inflated if start is None else start
     u, p = begin.u.copy(), inflated.pressure
+    if guess is not None:
+        guess = np.asarray(guess, dtype=float)
+        if steps != 1 or guess.shape != u.shape or not np.all(np.isfinite(guess)):
+            raise ValueError(
+                f"guess: finite displacements of shape {u.shape} (m), with steps = 1; got shape {guess.shape}"
+            )
+        if admissible(tire, guess):
+            u = guess.copy()
     history = list(begin.history)
     active = begin.contact.copy()
     for level in np.linspace(begin.road_lift + (lift - begin.road_lift) / steps, lift, steps):

@@ -315,16 +315,23 @@ def _moving(system: LocalSystem, u: np.ndarray) -> bool:
     return bool(system.moves.size and np.abs(system.moves).max() > STEP_TOLERANCE * np.abs(u).max())
 
 
+def admissible(tire: LoadedTire, u: np.ndarray) -> bool:
+    """Whether the displacements ``u`` invert no point of the mesh (``det F > 0`` everywhere)."""
+    try:
+        for group in tire.groups:
+            solid.deformation_gradient(group, u)
+    except FloatingPointError:
+        return False
+    return True
+
+
 def _admissible_part(tire: LoadedTire, u: np.ndarray, step: np.ndarray) -> float:
     """The largest of 1, 1/2, 1/4... of ``step`` that inverts no point of the mesh."""
     part = 1.0
     for _ in range(12):
-        try:
-            for group in tire.groups:
-                solid.deformation_gradient(group, u + part * step)
+        if admissible(tire, u + part * step):
             return part
-        except FloatingPointError:
-            part *= 0.5
+        part *= 0.5
     raise FloatingPointError("the road's step inverts the mesh however it is divided: take smaller load steps")
 
 

@@ -131,21 +131,25 @@ def test_where_the_tire_softens_the_secant_s_step_falls_short_once_then_road_ste
     monkeypatch, exponent
 ):
     """A force growing like a power of the lift below one (softening: a secant step falls short): one
-    secant step, then road steps, no more solves than road steps alone would take plus one."""
-    lifts = []
+    secant step, then road steps, no more solves than road steps alone would take plus one. Each step's
+    Newton starts on the line through the last two states (here displacements equal to the lift: exact)."""
+    lifts, guesses = [], []
 
     def force(lift: float) -> float:
         return 1000.0 * (lift / 0.01) ** exponent
 
-    def pressed(tire, inflated, lift, start, load, road_step, road):
+    def pressed(tire, inflated, lift, start, load, road_step, road, guess):
         lifts.append(lift)
+        guesses.append(guess)
         assert len(lifts) < 50, "the steps never pass the load"
-        return SimpleNamespace(road_lift=lift, road_force=force(lift))
+        return SimpleNamespace(road_lift=lift, road_force=force(lift), u=np.array([lift]))
 
     monkeypatch.setattr(loading, "_pressed", pressed)
     monkeypatch.setattr(loading, "_land", lambda tire, inflated, load, below, above, *rest: (below, above))
-    inflated = SimpleNamespace(road_lift=0.0, road_force=0.0)
+    inflated = SimpleNamespace(road_lift=0.0, road_force=0.0, u=np.zeros(1))
     below, above = loading.load_on_road(None, inflated, 1500.0, 0.004)
+    assert guesses[0] is None  # from the inflated tire: one state known
+    assert all(guess == pytest.approx([lift], rel=1e-12) for guess, lift in zip(guesses[1:], lifts[1:]))
     assert below.road_force < 1500.0 <= above.road_force
     steps = np.diff([0.0, *lifts])
     (short,) = np.nonzero(np.abs(steps - 0.004) > 1e-12)[0]  # one step sized by the secant, the others road steps

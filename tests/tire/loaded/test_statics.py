@@ -122,6 +122,31 @@ def test_the_loaded_state_does_not_depend_on_the_load_steps(tire, inflated, load
     assert np.abs(one_step.u - loaded.u).max() < 1e-9 * np.abs(loaded.u).max()
 
 
+def test_started_from_a_guess_the_road_step_reaches_the_same_equilibrium_with_its_contact_set_at_once(
+    tire, inflated, loaded
+):
+    """Newton from the line through the inflated and the loaded state (extrapolated by half) against Newton from
+    the loaded state: one equilibrium; the nodes inside the road at the guess held from the first iteration,
+    one contact set instead of two, no more iterations (5 against 6 here). A guess that inverts the mesh is
+    ignored; one of the wrong size, not finite or with several steps is refused by name."""
+    lift = 1.5 * loaded.road_lift
+    line = inflated.u + 1.5 * (loaded.u - inflated.u)
+    plain, guessed = (
+        road_contact.press_on_road(tire, inflated, lift, steps=1, start=loaded, guess=guess) for guess in (None, line)
+    )
+    assert np.array_equal(guessed.contact, plain.contact)
+    assert np.abs(guessed.u - plain.u).max() < 1e-9 * np.abs(plain.u).max()
+    assert len(plain.history[-1]) == 2 and len(guessed.history[-1]) == 1  # contact sets tried
+    iterations = [sum(len(tries) for tries in state.history[-1]) for state in (plain, guessed)]
+    assert iterations[1] <= iterations[0]
+    inverting = -2.0 * tire.mesh.coordinates.ravel()  # F = -I: ignored, Newton starts from the loaded state
+    ignored = road_contact.press_on_road(tire, inflated, lift, steps=1, start=loaded, guess=inverting)
+    assert np.array_equal(ignored.u, plain.u)
+    for guess, steps in ((line[:-1], 1), (np.full_like(line, np.nan), 1), (line, 2)):
+        with pytest.raises(ValueError, match="guess"):
+            road_contact.press_on_road(tire, inflated, lift, steps=steps, start=loaded, guess=guess)
+
+
 def test_an_inverted_point_is_refused(tire):
     """``det F <= 0`` is no state of a solid: the deformation gradient refuses it instead of giving an energy."""
     reflected = -2.0 * tire.mesh.coordinates.ravel()  # every point to its mirror image through the axle: F = -I
