@@ -90,7 +90,10 @@ print(summary.to_string(float_format=lambda v: f"{v:.1f}"))
 #
 # The beads are held on the rim; the pressure is applied in one step (a follower load: it turns
 # with the inner surface); then the road rises in steps, each step's contact set updated until
-# no held node pulls and no free node goes through the road. With the contact set fixed,
+# no held node pulls and no free node goes through the road. Each step starts on the line through
+# the last two equilibria (the first from the inflated tire itself), the tread nodes inside the road
+# there held at once: a predictor that saves a contact set or two per step; the last steps, which
+# land on the load between two known states, start nearly balanced. With the contact set fixed,
 # Newton's method with the exact tangent (checked against finite differences in the tests)
 # converges superlinearly: in the table's residuals (relative out-of-balance force, each step's
 # first value the state it starts from) the exponent grows faster from one iteration to the
