@@ -175,6 +175,44 @@ class FootprintMeasures:
         return self.load / self.contact_area
 
 
+#: A node closer than this to a band edge (m) lies on it: the tolerance is far above the round-off
+#: of a footprint's positions (~1e-15 m) and far below the tread's node spacing (mm).
+EDGE_TOLERANCE = 1e-9
+
+
+def symmetric_bands(position: np.ndarray, extent: float, target: float) -> tuple[np.ndarray, int]:
+    """Band of each node across ``[0, extent]`` in the fewest equal bands no wider than ``target``.
+
+    A symmetric footprint gets a symmetric partition, decided by geometry and not by round-off:
+
+    * a node within :data:`EDGE_TOLERANCE` of an edge goes to the band nearer the middle;
+    * the middle itself is an edge only for an even number of bands, and no band is nearer there,
+      so a node on the middle makes the count odd (the middle of a band then).
+
+    Parameters
+    ----------
+    position : ndarray
+        Each node's distance from the partition's start (m), within ``[0, extent]``.
+    extent, target : float
+        Length to divide and the longest band (m).
+
+    Returns
+    -------
+    band : ndarray of int
+        Band of each node, 0 at the start.
+    n_bands : int
+        Number of bands, each ``extent / n_bands`` wide.
+    """
+    n_bands = int(np.ceil(extent / target - 1e-9))
+    if n_bands % 2 == 0 and np.any(np.abs(position - 0.5 * extent) < EDGE_TOLERANCE):
+        n_bands += 1
+    width = extent / n_bands
+    where = position / width
+    tolerance = EDGE_TOLERANCE / width
+    band = np.where(where < 0.5 * n_bands, np.floor(where + tolerance), np.ceil(where - tolerance) - 1)
+    return np.clip(band, 0, n_bands - 1).astype(int), n_bands
+
+
 def tassellate(
     node_strip: np.ndarray,
     node_index: np.ndarray,
@@ -222,13 +260,7 @@ def tassellate(
         raise ValueError("no contact nodes: the tire does not touch the road")
     lead = np.max(node_x + 0.5 * node_dx_plus)
     trail = np.min(node_x - 0.5 * node_dx_minus)
-    n_rows = int(np.ceil((lead - trail) / target_length - 1e-9))
-    band = (lead - trail) / n_rows
-    # a node exactly on a band edge goes to the band nearer the footprint centre (symmetric partition)
-    pos = (lead - node_x) / band
-    centre = 0.5 * n_rows
-    rows = np.where(pos < centre, np.floor(pos + 1e-9), np.ceil(pos - 1e-9) - 1).astype(int)
-    rows = np.clip(rows, 0, n_rows - 1)
+    rows, _ = symmetric_bands(lead - node_x, lead - trail, target_length)  # numbered from the leading edge
     columns = node_strip // strips_per_column if node_column is None else np.asarray(node_column, int)
     # numbering: row by row from the leading edge, left to right
     key = rows * (columns.max() + 1) + columns

@@ -18,7 +18,7 @@ import dataclasses
 import numpy as np
 
 from ..model import Footprint, FRFResult
-from ..tasselli import Tasselli, tassellate
+from ..tasselli import Tasselli, symmetric_bands, tassellate
 from .dynamics import LoadedFootprintFRF
 from .road_contact import vertical_stiffness
 from .statics import LoadedTire, StaticState
@@ -60,14 +60,7 @@ def loaded_tasselli(tire: LoadedTire, state: StaticState, areas: np.ndarray | No
     width = np.where(np.isnan(gaps), np.nanmax(gaps, axis=0), gaps).sum(axis=0) / 2  # an edge node: its inner gap
     target = tire.spec.tasselli.target_length
     outer = (y - width / 2).min(), (y + width / 2).max()
-    n_bands = int(np.ceil((outer[1] - outer[0]) / target - 1e-9))
-    centre_line = 0.5 * (outer[0] + outer[1])
-    if n_bands % 2 == 0 and np.any(np.abs(y - centre_line) < 1e-9):
-        n_bands += 1  # a node on the centre line: an odd number of bands keeps it off their edges
-    band_width = (outer[1] - outer[0]) / n_bands
-    # a node on a band edge goes to the band nearer the centre line (a symmetric footprint: symmetric columns)
-    where = (y - outer[0]) / band_width
-    band = np.where(where < n_bands / 2, np.floor(where + 1e-9), np.ceil(where - 1e-9) - 1)
+    band, n_bands = symmetric_bands(y - outer[0], outer[1] - outer[0], target)
     hats = tassellate(
         node_strip=column,
         node_index=ring,
@@ -75,11 +68,11 @@ def loaded_tasselli(tire: LoadedTire, state: StaticState, areas: np.ndarray | No
         node_y=y,
         node_dx_minus=dx_minus,
         node_dx_plus=dx_plus,
-        strip_width=band_width,
+        strip_width=(outer[1] - outer[0]) / n_bands,
         target_length=target,
         strips_per_column=1,
         node_width=width,
-        node_column=np.clip(band, 0, n_bands - 1).astype(int),
+        node_column=band,
     )
     area = shape_function_areas(tire, state) if areas is None else areas
     weight = area / np.bincount(hats.node_tassello, weights=area)[hats.node_tassello]
