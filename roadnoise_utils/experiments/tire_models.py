@@ -79,7 +79,7 @@ def tire_as_files(tire: Tire, roads: tuple[str, ...] = ("flat",), drum_radius: f
     drum_radius = drum_radius if "drum" in roads else None
     model = tire_model(tire)
     cases = [model.case(road, drum_radius=drum_radius if road == "drum" else None) for road in roads]
-    code = stage_fingerprint(tire_as_files, (*model.frf_runs(), export_frf_files))
+    code = stage_fingerprint(tire_as_files, (*model.code_runs(), export_frf_files))
     key = cache_key(
         "tire_as_files", {"tire": model.fingerprint(), "roads": list(roads), "drum_radius": drum_radius}, code
     )

@@ -341,14 +341,26 @@ def _execute_all(
     return {path: done[path] for path in paths}, table
 
 
+#: Seconds a terminated worker has to end (its kernel shut down) before it is killed.
+STOP_GRACE = 5.0
+
+
 def _stop_workers(pool) -> None:
     """End a failed run's process pool now: its workers are terminated, not waited for (a worker may be
     minutes into a cold chapter or the report-only stages; a stage it leaves unfinished writes nothing,
-    the cache writing each entry whole, and its kernel ends with its parent). A thread pool's one
-    worker cannot be stopped: it ends its task. The workers are the executor's ``_processes`` (no
-    public way to end them before Python 3.14's ``terminate_workers``)."""
-    for process in list((getattr(pool, "_processes", None) or {}).values()):
+    the cache writing each entry whole). A worker executing a notebook does not end on SIGTERM:
+    nbclient's handler shuts its kernel down and carries on, and the pool would wait for it for ever;
+    so each worker still alive after :data:`STOP_GRACE` s is killed (a kernel ends with its parent).
+    A thread pool's one worker cannot be stopped: it ends its task. The workers are the executor's
+    ``_processes`` (no public way to end them before Python 3.14's ``terminate_workers``)."""
+    processes = list((getattr(pool, "_processes", None) or {}).values())
+    for process in processes:
         process.terminate()
+    deadline = time.monotonic() + STOP_GRACE
+    for process in processes:
+        process.join(max(0.0, deadline - time.monotonic()))
+        if process.is_alive():
+            process.kill()
 
 
 def reproduce(

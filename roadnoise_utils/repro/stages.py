@@ -59,8 +59,8 @@ def rim_side_mass(tire: Tire) -> float:
 
 
 def frf_runs(tire: Tire) -> tuple:
-    """The numerics behind :func:`frf_visco` for this tire's model (cache fingerprints)."""
-    return tire_model(tire).frf_runs()
+    """What the stages built on this tire's results fingerprint: its model's :meth:`~.TireModel.code_runs`."""
+    return tire_model(tire).code_runs()
 
 
 def has_cavity(tire: Tire) -> bool:
@@ -149,7 +149,7 @@ def fit_tasselli(
         return order.fit_at_order(visco.freqs, visco.H, n_poles, f_max, FIT_TOLERANCE, strict=False)
 
     inputs = {"tire": model.fingerprint(), **case.key(), **options}
-    return cached(fit_tasselli, inputs, compute, runs=(order.fit_at_order, *model.frf_runs()))
+    return cached(fit_tasselli, inputs, compute, runs=(order.fit_at_order, *model.code_runs()))
 
 
 def fit_hub(
@@ -172,7 +172,7 @@ def fit_hub(
         return moving_hub.fit_hub(visco.freqs, visco.G_H, n_poles=n_poles, f_max=f_max, tolerance=FIT_TOLERANCE)
 
     inputs = {"tire": model.fingerprint(), **case.key(), **options}
-    return cached(fit_hub, inputs, compute, runs=(moving_hub.fit_hub, *model.frf_runs()))
+    return cached(fit_hub, inputs, compute, runs=(moving_hub.fit_hub, *model.code_runs()))
 
 
 def assemble_fixed_hub(

@@ -27,6 +27,7 @@ class; nothing else needs to know which model it holds.
 from __future__ import annotations
 
 import dataclasses
+import sys
 from abc import ABC, abstractmethod
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -337,6 +338,15 @@ class TireModel(ABC):
     @abstractmethod
     def frf_runs(self) -> tuple[Callable | ModuleType, ...]:
         """The numerics behind :meth:`load` and :meth:`fixed_hub_frfs` (the fingerprint of stages built on them)."""
+
+    def code_runs(self) -> tuple[Callable | ModuleType, ...]:
+        """What a stage built on this model's results fingerprints (:func:`~roadnoise_utils.repro.cache.stage_fingerprint`):
+        :meth:`frf_runs` and, for a model of this package, its own module with every package module it
+        imports. An edit anywhere in the model's code (its footprint's tasselli included) then
+        recomputes the fits, runs and sweeps made from its results, whatever :meth:`frf_runs` lists."""
+        module = sys.modules[type(self).__module__]
+        own = (module,) if module.__name__.startswith(f"{__package__.split('.')[0]}.") else ()
+        return (*own, *self.frf_runs())
 
     def fingerprint(self) -> Any:
         """What the stage cache keys on: the validated tire file (its every value, its data files' contents)."""

@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import os
 import re
+import signal
 import subprocess
 import sys
 import time
@@ -10,6 +12,7 @@ from pathlib import Path
 
 import nbformat
 import numpy as np
+import psutil
 import pytest
 
 import roadnoise_utils as ru
@@ -253,3 +256,44 @@ def test_a_figures_path_that_cannot_be_a_folder_is_refused_before_any_notebook_r
         reproduce.main(["--figures", str(blocker / "figures")])
     assert "is a file, not a folder" in capsys.readouterr().err
     assert reproduce.output_folder_problem(tmp_path / "new" / "figures") == ""
+
+
+#: Run by a fresh interpreter: a reproduction whose report-only stages fail while a chapter runs.
+_FAILING_BESIDE_A_CHAPTER = """
+import sys
+from pathlib import Path
+from roadnoise_utils.repro import reproduce
+from tests.repro import slow_task
+reproduce._report_only_stages = slow_task.fail_soon
+reproduce._timed_execution = slow_task.chapter_deaf_to_sigterm
+reproduce.STOP_GRACE = 1.0
+reproduce.REPORT_ONLY_MODELS = ("loaded-fe",)
+try:
+    reproduce._execute_all([Path(p) for p in sys.argv[1:]], 900, workers=2, report=True)
+except RuntimeError as error:
+    print("stopped:", error)
+"""
+
+
+def test_a_failure_beside_a_chapter_deaf_to_sigterm_ends_the_run(tmp_path):
+    """The report-only stages fail while the other worker runs a chapter that SIGTERM does not end (a
+    worker executing a notebook: nbclient's handler shuts the kernel down and carries on). The run
+    ends with the failure within seconds, that worker killed after its grace; a pool waiting for
+    it would wait for ever."""
+    marker = tmp_path / "chapter.pid"
+    start = time.perf_counter()
+    run = subprocess.Popen(
+        [sys.executable, "-c", _FAILING_BESIDE_A_CHAPTER, str(tmp_path / "00.ipynb"), str(tmp_path / "01.ipynb")],
+        cwd=REPO_ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True,
+        env={**os.environ, "SLOW_TASK_WAIT_FOR": str(marker)},
+    )  # fmt: skip
+    try:
+        out, err = run.communicate(timeout=60)
+    except subprocess.TimeoutExpired:
+        os.killpg(run.pid, signal.SIGKILL)  # the run and its workers
+        pytest.fail("the run did not end within 60 s of its failure")
+    assert "stopped: a report-only stage failed" in out, err[-2000:]
+    assert time.perf_counter() - start < 30.0
+    assert (
+        not psutil.pid_exists(int(marker.read_text())) or psutil.Process(int(marker.read_text())).status() == "zombie"
+    )

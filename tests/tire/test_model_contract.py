@@ -9,10 +9,13 @@ files round-trip exactly, and a capability it lacks says so by name.
 
 from __future__ import annotations
 
+from types import ModuleType
+
 import numpy as np
 import pytest
 
 import roadnoise_utils as ru
+from roadnoise_utils.repro.cache import module_closure
 from roadnoise_utils.tire.model import CAPABILITIES, REGISTRY, NotApplicable
 
 COARSE_RING = {"mesh.n_strips": 7, "mesh.n_elements": 260, "tasselli.strips_per_column": 1}
@@ -52,6 +55,16 @@ def model(request, exported, coarse_section, small_loaded):
 
 def test_every_registered_model_is_tried():
     assert {"ring", "cross-section", "frf-file", "loaded-fe"} <= set(REGISTRY)
+
+
+def test_the_stages_built_on_its_results_fingerprint_all_of_its_code(model):
+    """The fits, runs and sweeps made from a model's results fingerprint its own module and every
+    package module it imports (its footprint's tasselli among them), so an edit of any of them
+    recomputes those stages: not only the numerics its ``frf_runs`` names."""
+    names = {item.__name__ if isinstance(item, ModuleType) else item.__module__ for item in model.code_runs()}
+    closure = module_closure(names)
+    assert type(model).__module__ in closure and "roadnoise_utils.tire.tasselli" in closure
+    assert set(module_closure({type(model).__module__})) <= set(closure)
 
 
 def test_the_footprint_partitions_its_contact_nodes_and_balances_the_load(model):
