@@ -13,7 +13,9 @@ tread points, so a road height field :math:`z(x, y)` gives the tassello displace
           w_n = \\frac{\\int N_n\\,dA}{\\sum_{m \\in i}\\int N_m\\,dA},
 
 so the weights of each tassello sum to one. Columns are groups of belt strips; rows are bands
-of equal length along the footprint. Tasselli are numbered from 1, row by row from the leading
+of equal length along the footprint, a contact point on a row edge in the row nearer the
+footprint's middle (on the middle edge itself, the leading row of the two), decided by
+geometry, never by round-off (:func:`symmetric_bands`). Tasselli are numbered from 1, row by row from the leading
 edge (+x, where the road enters the footprint), and from left (-y) to right in each row.
 """
 
@@ -180,14 +182,18 @@ class FootprintMeasures:
 EDGE_TOLERANCE = 1e-9
 
 
-def symmetric_bands(position: np.ndarray, extent: float, target: float) -> tuple[np.ndarray, int]:
+def symmetric_bands(
+    position: np.ndarray, extent: float, target: float, odd_on_middle: bool = True
+) -> tuple[np.ndarray, int]:
     """Band of each node across ``[0, extent]`` in the fewest equal bands no wider than ``target``.
 
-    A symmetric footprint gets a symmetric partition, decided by geometry and not by round-off:
+    A node's band is decided by geometry, never by round-off of its position:
 
-    * a node within :data:`EDGE_TOLERANCE` of an edge goes to the band nearer the middle;
-    * the middle itself is an edge only for an even number of bands, and no band is nearer there,
-      so a node on the middle makes the count odd (the middle of a band then).
+    * a node within :data:`EDGE_TOLERANCE` of an edge goes to the band nearer the middle, so a
+      symmetric footprint is cut symmetrically;
+    * the middle itself is an edge only for an even number of bands, and no band is nearer there:
+      with ``odd_on_middle`` a node on it makes the count odd (the middle of a band then), else it
+      goes to the band before the middle.
 
     Parameters
     ----------
@@ -195,6 +201,8 @@ def symmetric_bands(position: np.ndarray, extent: float, target: float) -> tuple
         Each node's distance from the partition's start (m), within ``[0, extent]``.
     extent, target : float
         Length to divide and the longest band (m).
+    odd_on_middle : bool
+        Whether a node on the middle makes the number of bands odd.
 
     Returns
     -------
@@ -204,12 +212,13 @@ def symmetric_bands(position: np.ndarray, extent: float, target: float) -> tuple
         Number of bands, each ``extent / n_bands`` wide.
     """
     n_bands = int(np.ceil(extent / target - 1e-9))
-    if n_bands % 2 == 0 and np.any(np.abs(position - 0.5 * extent) < EDGE_TOLERANCE):
+    if odd_on_middle and n_bands % 2 == 0 and np.any(np.abs(position - 0.5 * extent) < EDGE_TOLERANCE):
         n_bands += 1
     width = extent / n_bands
     where = position / width
     tolerance = EDGE_TOLERANCE / width
-    band = np.where(where < 0.5 * n_bands, np.floor(where + tolerance), np.ceil(where - tolerance) - 1)
+    before_middle = where < 0.5 * n_bands - tolerance
+    band = np.where(before_middle, np.floor(where + tolerance), np.ceil(where - tolerance) - 1)
     return np.clip(band, 0, n_bands - 1).astype(int), n_bands
 
 
@@ -260,7 +269,8 @@ def tassellate(
         raise ValueError("no contact nodes: the tire does not touch the road")
     lead = np.max(node_x + 0.5 * node_dx_plus)
     trail = np.min(node_x - 0.5 * node_dx_minus)
-    rows, _ = symmetric_bands(lead - node_x, lead - trail, target_length)  # numbered from the leading edge
+    # rows numbered from the leading edge; a node on the middle edge joins the leading row of the two
+    rows, _ = symmetric_bands(lead - node_x, lead - trail, target_length, odd_on_middle=False)
     columns = node_strip // strips_per_column if node_column is None else np.asarray(node_column, int)
     # numbering: row by row from the leading edge, left to right
     key = rows * (columns.max() + 1) + columns
