@@ -233,7 +233,9 @@ if ring_tire:
 #
 # The footprint is divided into columns (one per belt strip, 14 mm) and rows (equal bands of at
 # most 15.5 mm along the footprint), so every tassello is ≤ 25 mm and wavelengths of 5 cm are
-# resolved. Tasselli are numbered row by row from the leading edge (+x, where the road
+# resolved. A contact point on a row edge joins the row nearer the footprint's middle (on the
+# middle edge itself, the leading row of the two): the geometry decides, not the last bit of a
+# coordinate. Tasselli are numbered row by row from the leading edge (+x, where the road
 # enters). Each contact point carries a bilinear shape function; a tassello's displacement is
 # the shape-function-weighted average of the road under it, with weights summing to one.
 
